@@ -1,0 +1,89 @@
+#include "gl/context.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <string_view>
+
+#include "gl/errors.h"
+#include "gl/gl.h"
+
+namespace stencil {
+
+const char* backendName(Backend b) {
+  switch (b) {
+    case Backend::Osmesa: return "osmesa";
+    case Backend::Egl: return "egl";
+    case Backend::Window: return "window";
+  }
+  return "?";
+}
+
+std::optional<Backend> parseBackend(const std::string& name) {
+  if (name == "osmesa") return Backend::Osmesa;
+  if (name == "egl") return Backend::Egl;
+  if (name == "window") return Backend::Window;
+  return std::nullopt;
+}
+
+bool osmesaAvailable() {
+#ifdef STENCIL_HAVE_OSMESA
+  return true;
+#else
+  return false;
+#endif
+}
+
+std::string GlFeatures::summary() const {
+  auto yn = [](bool b) { return b ? "yes" : "no"; };
+  return std::string("depth_bounds_test=") + yn(depthBoundsTest) +
+         " pipeline_statistics=" + yn(pipelineStatistics) + " clip_control=" + yn(clipControl) +
+         " khr_debug=" + yn(khrDebug) + " depth_clamp=" + yn(depthClamp);
+}
+
+void Context::loadGl(GlProc (*getProcAddress)(const char*)) {
+  int version = gladLoadGL(getProcAddress);
+  if (version == 0) throw NoContextError("could not load OpenGL entry points");
+  GlFeatures& f = features_;
+  f.major = GLAD_VERSION_MAJOR(version);
+  f.minor = GLAD_VERSION_MINOR(version);
+  if (f.major * 10 + f.minor < 33)
+    throw NoContextError("OpenGL " + std::to_string(f.major) + "." + std::to_string(f.minor) +
+                         " context; the lessons need 3.3 core");
+  auto str = [](GLenum e) {
+    const auto* s = reinterpret_cast<const char*>(glGetString(e));
+    return std::string(s ? s : "");
+  };
+  f.vendor = str(GL_VENDOR);
+  f.renderer = str(GL_RENDERER);
+  f.version = str(GL_VERSION);
+  bool gl45 = f.major > 4 || (f.major == 4 && f.minor >= 5);
+  bool gl43 = f.major > 4 || (f.major == 4 && f.minor >= 3);
+  f.depthBoundsTest = GLAD_GL_EXT_depth_bounds_test;
+  f.pipelineStatistics = GLAD_GL_ARB_pipeline_statistics_query;
+  f.clipControl = GLAD_GL_ARB_clip_control || gl45;
+  f.khrDebug = GLAD_GL_KHR_debug || gl43;
+  f.depthClamp = true;  // core since 3.2, so guaranteed by the 3.3 floor
+}
+
+std::unique_ptr<Context> createContext(Backend b, int width, int height, const std::string& title) {
+  switch (b) {
+    case Backend::Osmesa: return createOsmesaContext(width, height);
+    case Backend::Egl: return createEglContext();
+    case Backend::Window: return createWindowContext(width, height, title);
+  }
+  throw NoContextError("unknown backend");
+}
+
+BackendChoice chooseBackend(std::optional<Backend> requested, bool headless) {
+  if (requested) return {*requested, "chosen by --backend"};
+  const char* x11 = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  bool display = (x11 && *x11) || (wayland && *wayland);
+  if (!headless && display) return {Backend::Window, "a display is available"};
+  std::string why = headless ? "--headless" : "no display";
+  if (osmesaAvailable())
+    return {Backend::Osmesa, why + "; OSMesa is the deterministic software default (--backend egl for a GPU)"};
+  return {Backend::Egl, why + "; built without OSMesa"};
+}
+
+}  // namespace stencil

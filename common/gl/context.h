@@ -1,0 +1,65 @@
+// One interface over three ways to get an OpenGL 3.3 core context: OSMesa (software,
+// deterministic), EGL (surfaceless or device platform: a GPU where there is one) and a
+// GLFW window. Lessons never see which one they run on; they render into a Framebuffer.
+#pragma once
+#include <memory>
+#include <optional>
+#include <string>
+
+struct GLFWwindow;
+
+namespace stencil {
+
+enum class Backend { Osmesa, Egl, Window };
+
+const char* backendName(Backend);
+std::optional<Backend> parseBackend(const std::string&);
+bool osmesaAvailable();  // false when built without libosmesa6-dev
+
+// Optional features, detected once per context. Lessons use them only when present.
+struct GlFeatures {
+  std::string vendor, renderer, version;
+  int major = 0, minor = 0;
+  bool depthBoundsTest = false;     // EXT_depth_bounds_test
+  bool pipelineStatistics = false;  // ARB_pipeline_statistics_query
+  bool clipControl = false;         // ARB_clip_control (core in 4.5)
+  bool khrDebug = false;            // KHR_debug (core in 4.3)
+  bool depthClamp = false;          // ARB_depth_clamp (core in 3.2)
+  std::string summary() const;      // one line: "depth_bounds_test=no clip_control=yes ..."
+};
+
+class Context {
+ public:
+  virtual ~Context() = default;
+  virtual Backend backend() const = 0;
+  virtual GLFWwindow* window() { return nullptr; }  // only the window backend has one
+  const GlFeatures& features() const { return features_; }
+
+ protected:
+  // Loads GL entry points through the backend's get-proc-address and detects features.
+  // Throws NoContextError when the context is below GL 3.3.
+  using GlProc = void (*)();
+  void loadGl(GlProc (*getProcAddress)(const char*));
+
+ private:
+  GlFeatures features_;
+};
+
+// Creates a current context of the given backend. Throws NoContextError with the reason.
+std::unique_ptr<Context> createContext(Backend, int width, int height, const std::string& title);
+
+struct BackendChoice {
+  Backend backend;
+  std::string reason;  // said in one line when the context starts
+};
+
+// A flag wins; else a window when a display exists and --headless is not given; else
+// OSMesa (deterministic) where built in, else EGL.
+BackendChoice chooseBackend(std::optional<Backend> requested, bool headless);
+
+// Backend constructors, one per file.
+std::unique_ptr<Context> createOsmesaContext(int width, int height);
+std::unique_ptr<Context> createEglContext();
+std::unique_ptr<Context> createWindowContext(int width, int height, const std::string& title);
+
+}  // namespace stencil

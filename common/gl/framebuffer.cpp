@@ -1,0 +1,79 @@
+#include "gl/framebuffer.h"
+
+#include <algorithm>
+#include <string>
+
+#include "gl/errors.h"
+
+namespace stencil {
+namespace {
+
+// glReadPixels returns the bottom row first; images are stored top row first.
+void flipRows(Image& image) {
+  const size_t row = static_cast<size_t>(image.width) * image.channels;
+  for (int y = 0; y < image.height / 2; ++y)
+    std::swap_ranges(image.at(0, y), image.at(0, y) + row, image.at(0, image.height - 1 - y));
+}
+
+}  // namespace
+
+Framebuffer::Framebuffer(int width, int height, int stencilBits) : width_(width), height_(height) {
+  glGenFramebuffers(1, &fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glGenRenderbuffers(1, &colour_);
+  glBindRenderbuffer(GL_RENDERBUFFER, colour_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_);
+  glGenRenderbuffers(1, &depthStencil_);
+  glBindRenderbuffer(GL_RENDERBUFFER, depthStencil_);
+  if (stencilBits > 0) {
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depthStencil_);
+  } else {
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depthStencil_);
+  }
+  GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE)
+    throw UsageError("framebuffer " + std::to_string(width) + "x" + std::to_string(height) +
+                     " is incomplete (status " + std::to_string(status) + ")");
+
+  // Ask GL what it actually gave us.
+  GLint type = GL_NONE;
+  glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT,
+                                        GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+  if (type != GL_NONE)
+    glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT,
+                                          GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &stencilBits_);
+}
+
+Framebuffer::~Framebuffer() {
+  glDeleteFramebuffers(1, &fbo_);
+  glDeleteRenderbuffers(1, &colour_);
+  glDeleteRenderbuffers(1, &depthStencil_);
+}
+
+void Framebuffer::bind() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glViewport(0, 0, width_, height_);
+}
+
+Image Framebuffer::readColour() const {
+  Image image(width_, height_, 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+  flipRows(image);
+  return image;
+}
+
+Image Framebuffer::readStencil() const {
+  Image image(width_, height_, 1);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, image.pixels.data());
+  flipRows(image);
+  return image;
+}
+
+}  // namespace stencil

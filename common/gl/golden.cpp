@@ -1,0 +1,136 @@
+#include "gl/golden.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "gl/stencil_view.h"
+
+namespace stencil {
+namespace {
+
+// The actual image, greyed and dimmed, as the background of a diff picture.
+Image dimmed(const Image& actual) {
+  Image out(actual.width, actual.height, 4);
+  for (int y = 0; y < actual.height; ++y)
+    for (int x = 0; x < actual.width; ++x) {
+      const std::uint8_t* a = actual.at(x, y);
+      int grey = actual.channels == 1 ? a[0] : (a[0] + a[1] + a[2]) / 3;
+      std::uint8_t v = static_cast<std::uint8_t>(grey / 4);
+      std::uint8_t* o = out.at(x, y);
+      o[0] = o[1] = o[2] = v, o[3] = 255;
+    }
+  return out;
+}
+
+void markRed(Image& picture, int x, int y) {
+  std::uint8_t* o = picture.at(x, y);
+  o[0] = 255, o[1] = 0, o[2] = 0;
+}
+
+}  // namespace
+
+ImageDiff diffColour(const Image& actual, const Image& expected, int maxChannelDiff) {
+  ImageDiff d;
+  if (actual.width != expected.width || actual.height != expected.height) {
+    d.sizeMismatch = true;
+    return d;
+  }
+  d.picture = dimmed(actual);
+  d.pixels = static_cast<std::uint64_t>(actual.width) * actual.height;
+  for (int y = 0; y < actual.height; ++y)
+    for (int x = 0; x < actual.width; ++x) {
+      int worst = 0;
+      for (int c = 0; c < 4; ++c) worst = std::max(worst, std::abs(actual.at(x, y)[c] - expected.at(x, y)[c]));
+      d.maxChannelDiff = std::max(d.maxChannelDiff, worst);
+      if (worst > maxChannelDiff) {
+        ++d.differing;
+        markRed(d.picture, x, y);
+      }
+    }
+  return d;
+}
+
+ImageDiff diffStencil(const Image& actual, const Image& expected) {
+  ImageDiff d;
+  if (actual.width != expected.width || actual.height != expected.height) {
+    d.sizeMismatch = true;
+    return d;
+  }
+  d.picture = dimmed(actual);
+  d.pixels = static_cast<std::uint64_t>(actual.width) * actual.height;
+  for (int y = 0; y < actual.height; ++y)
+    for (int x = 0; x < actual.width; ++x) {
+      const int diff = std::abs(*actual.at(x, y) - *expected.at(x, y));
+      d.maxChannelDiff = std::max(d.maxChannelDiff, diff);
+      if (diff) {
+        ++d.differing;
+        markRed(d.picture, x, y);
+      }
+    }
+  return d;
+}
+
+std::filesystem::path goldenColourPath(const std::filesystem::path& dir, const std::string& name) {
+  return dir / (name + ".png");
+}
+std::filesystem::path goldenStencilPath(const std::filesystem::path& dir, const std::string& name) {
+  return dir / (name + ".stencil.png");
+}
+
+GoldenResult checkGolden(const Image& colour, const Image& stencil, const std::filesystem::path& dir,
+                         const std::string& name, const std::filesystem::path& artifacts,
+                         const ColourTolerance& tolerance) {
+  const auto colourPath = goldenColourPath(dir, name), stencilPath = goldenStencilPath(dir, name);
+  if (!std::filesystem::exists(colourPath) || !std::filesystem::exists(stencilPath)) {
+    writePng(artifacts / "colour-actual.png", colour);
+    writePng(artifacts / "stencil-actual.raw.png", stencil);
+    return {false, "no golden " + colourPath.string() + " / " + stencilPath.string() +
+                       " (see docs/testing.md to create it)"};
+  }
+  const Image expectedColour = readPng(colourPath, 4), expectedStencil = readPng(stencilPath, 1);
+  const ImageDiff c = diffColour(colour, expectedColour, tolerance.maxChannelDiff);
+  const ImageDiff s = diffStencil(stencil, expectedStencil);
+  if (c.sizeMismatch || s.sizeMismatch)
+    return {false, "size " + std::to_string(colour.width) + "x" + std::to_string(colour.height) +
+                       " differs from the golden's " + std::to_string(expectedColour.width) + "x" +
+                       std::to_string(expectedColour.height)};
+
+  const double fraction = static_cast<double>(c.differing) / static_cast<double>(c.pixels);
+  const bool passed = s.differing == 0 && fraction <= tolerance.maxFraction;
+  std::ostringstream msg;
+  msg << "stencil: " << s.differing << " of " << s.pixels << " pixels differ; colour: " << c.differing
+      << " pixels (" << fraction * 100 << "%) over " << tolerance.maxChannelDiff
+      << "/255, max channel diff " << c.maxChannelDiff << ", allowed " << tolerance.maxFraction * 100 << "%";
+  if (passed) return {true, msg.str()};
+
+  std::filesystem::create_directories(artifacts);
+  writePng(artifacts / "colour-actual.png", colour);
+  writePng(artifacts / "colour-expected.png", expectedColour);
+  writePng(artifacts / "colour-diff.png", c.picture);
+  writePng(artifacts / "stencil-actual.png", stencilRamp(stencil));
+  writePng(artifacts / "stencil-expected.png", stencilRamp(expectedStencil));
+  writePng(artifacts / "stencil-diff.png", s.picture);
+  writePng(artifacts / "stencil-actual.raw.png", stencil);
+  std::ofstream json(artifacts / "summary.json");
+  json << "{\n  \"golden\": \"" << colourPath.string() << "\",\n"
+       << "  \"passed\": false,\n"
+       << "  \"stencil_pixels_differing\": " << s.differing << ",\n"
+       << "  \"stencil_max_diff\": " << s.maxChannelDiff << ",\n"
+       << "  \"colour_pixels_over_tolerance\": " << c.differing << ",\n"
+       << "  \"colour_fraction_over_tolerance\": " << fraction << ",\n"
+       << "  \"colour_max_channel_diff\": " << c.maxChannelDiff << ",\n"
+       << "  \"tolerance\": {\"max_channel_diff\": " << tolerance.maxChannelDiff
+       << ", \"max_fraction\": " << tolerance.maxFraction << "},\n"
+       << "  \"pixels\": " << s.pixels << "\n}\n";
+  return {false, msg.str() + "; images and summary.json in " + artifacts.string()};
+}
+
+void writeGolden(const Image& colour, const Image& stencil, const std::filesystem::path& dir,
+                 const std::string& name) {
+  writePng(goldenColourPath(dir, name), colour);
+  writePng(goldenStencilPath(dir, name), stencil);
+}
+
+}  // namespace stencil

@@ -1,0 +1,294 @@
+#include "gl/lesson.h"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <numeric>
+#include <sstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "gl/debug.h"
+#include "gl/errors.h"
+#include "gl/golden.h"
+#include "gl/session.h"
+#include "gl/shader.h"
+#include "gl/stencil_view.h"
+
+namespace stencil {
+
+// ---- lesson model -------------------------------------------------------------------
+
+const char* featureName(Feature f) {
+  switch (f) {
+    case Feature::DepthBoundsTest: return "EXT_depth_bounds_test";
+    case Feature::PipelineStatistics: return "ARB_pipeline_statistics_query";
+    case Feature::ClipControl: return "ARB_clip_control";
+    case Feature::DepthClamp: return "ARB_depth_clamp";
+    case Feature::KhrDebug: return "KHR_debug";
+  }
+  return "?";
+}
+
+bool hasFeature(const GlFeatures& g, Feature f) {
+  switch (f) {
+    case Feature::DepthBoundsTest: return g.depthBoundsTest;
+    case Feature::PipelineStatistics: return g.pipelineStatistics;
+    case Feature::ClipControl: return g.clipControl;
+    case Feature::DepthClamp: return g.depthClamp;
+    case Feature::KhrDebug: return g.khrDebug;
+  }
+  return false;
+}
+
+glm::vec3 OrbitCamera::eye() const {
+  const float az = glm::radians(azimuthDeg), el = glm::radians(elevationDeg);
+  return target + distance * glm::vec3(std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el));
+}
+glm::mat4 OrbitCamera::view() const { return glm::lookAt(eye(), target, glm::vec3(0, 1, 0)); }
+glm::mat4 OrbitCamera::projection(float aspect) const {
+  return glm::perspective(glm::radians(fovyDeg), aspect, nearPlane, farPlane);
+}
+
+Frame::Frame(double t, glm::ivec2 s, const OrbitCamera& camera, const std::vector<Option>& options,
+             PassRecorder& recorder, const GlFeatures& f)
+    : time(t),
+      size(s),
+      view(camera.view()),
+      projection(camera.projection(static_cast<float>(s.x) / static_cast<float>(s.y))),
+      eye(camera.eye()),
+      features(f),
+      options_(options),
+      recorder_(recorder) {}
+
+int Frame::option(std::string_view name) const {
+  for (const Option& o : options_)
+    if (o.name == name) return o.value;
+  throw std::logic_error("the lesson reads option '" + std::string(name) + "', which it does not declare");
+}
+
+void Frame::pass(std::string_view name) { recorder_.pass(name); }
+
+// ---- session --------------------------------------------------------------------------
+
+Session::Session(const LessonInfo& lessonInfo, const LessonFactory& factory, const CommandLine& cl,
+                 Backend backend)
+    : info(lessonInfo), commandLine(cl), camera(lessonInfo.camera) {
+  context = createContext(backend, cl.width, cl.height, info.id + ": " + info.title);
+  enableDebugOutput(context->features());
+  checkNeeds(info.needs, "lesson " + info.id);
+  setVariant(cl.variant.empty() ? info.variants.front().name : cl.variant);
+  options = optionsFor(info, variant, cl.settings);
+  makeFramebuffer(cl.width, cl.height);
+  lesson = factory();
+  checkGlErrors("while the lesson set up");
+}
+
+void Session::checkNeeds(const std::vector<Feature>& needs, const std::string& who) const {
+  for (Feature f : needs)
+    if (!hasFeature(context->features(), f))
+      throw UsageError(who + " needs " + featureName(f) + ", which " + context->features().renderer +
+                       " does not offer");
+}
+
+void Session::setVariant(const std::string& name) {
+  checkNeeds(findVariant(info, name).needs, "variant '" + name + "'");
+  variant = name;
+  options = optionsFor(info, variant, {});
+}
+
+void Session::makeFramebuffer(int width, int height) {
+  recorder.reset();
+  framebuffer = std::make_unique<Framebuffer>(width, height, commandLine.stencilBits);
+  if (framebuffer->stencilBits() < info.stencilBits)
+    throw UsageError("the framebuffer has " + std::to_string(framebuffer->stencilBits()) +
+                     " stencil bits; " + info.id + " needs " + std::to_string(info.stencilBits));
+  recorder = std::make_unique<PassRecorder>(info.passes, *framebuffer, context->features());
+}
+
+void Session::resize(int width, int height) { makeFramebuffer(width, height); }
+
+void Session::renderFrame(double time, FrameRequest request) {
+  framebuffer->bind();
+  // Every frame starts from GL's default state, so any frame can be reproduced alone.
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_SCISSOR_TEST);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+  glStencilMask(0xFF);
+  glStencilFunc(GL_ALWAYS, 0, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glDepthFunc(GL_LESS);
+  recorder->beginFrame(request);
+  Frame frame(time, {framebuffer->width(), framebuffer->height()}, camera, options, *recorder,
+              context->features());
+  lesson->render(frame);
+  recorder->endFrame();
+}
+
+// ---- headless run -----------------------------------------------------------------------
+
+namespace {
+
+std::string jsonNumber(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4f", v);
+  return buf;
+}
+std::string jsonNumber(const std::optional<double>& v) { return v ? jsonNumber(*v) : "null"; }
+std::string jsonNumber(const std::optional<std::uint64_t>& v) { return v ? std::to_string(*v) : "null"; }
+
+std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
+  const auto& passes = s.recorder->passStats();
+  std::ostringstream out;
+  const GlFeatures& f = s.context->features();
+  out << "{\n  \"lesson\": \"" << s.info.id << "\",\n  \"variant\": \"" << s.variant << "\",\n"
+      << "  \"backend\": \"" << backendName(s.context->backend()) << "\",\n  \"renderer\": \"" << f.renderer
+      << "\",\n  \"size\": [" << s.framebuffer->width() << ", " << s.framebuffer->height() << "],\n"
+      << "  \"time\": " << s.commandLine.time << ",\n  \"frames\": " << frameMs.size() << ",\n"
+      << "  \"features\": {\"depth_bounds_test\": " << f.depthBoundsTest
+      << ", \"pipeline_statistics\": " << f.pipelineStatistics << ", \"clip_control\": " << f.clipControl
+      << ", \"khr_debug\": " << f.khrDebug << ", \"depth_clamp\": " << f.depthClamp << "},\n"
+      << "  \"passes\": [\n";
+  PassStats total;
+  bool haveSamples = true, havePrims = true, haveGpu = true;
+  for (size_t i = 0; i < passes.size(); ++i) {
+    const PassStats& p = passes[i];
+    out << "    {\"name\": \"" << p.name << "\", \"draw_calls\": " << p.drawCalls
+        << ", \"triangles\": " << p.triangles << ", \"samples_passed\": " << jsonNumber(p.samplesPassed)
+        << ", \"primitives_submitted\": " << jsonNumber(p.primitivesSubmitted)
+        << ", \"gpu_ms\": " << jsonNumber(p.gpuMs) << ", \"cpu_ms\": " << jsonNumber(p.cpuMs) << "}"
+        << (i + 1 < passes.size() ? "," : "") << "\n";
+    total.drawCalls += p.drawCalls;
+    total.triangles += p.triangles;
+    haveSamples &= p.samplesPassed.has_value();
+    havePrims &= p.primitivesSubmitted.has_value();
+    haveGpu &= p.gpuMs.has_value();
+    total.samplesPassed = p.samplesPassed.value_or(0) + total.samplesPassed.value_or(0);
+    total.primitivesSubmitted = p.primitivesSubmitted.value_or(0) + total.primitivesSubmitted.value_or(0);
+    total.gpuMs = p.gpuMs.value_or(0) + total.gpuMs.value_or(0);
+    total.cpuMs += p.cpuMs;
+  }
+  if (!haveSamples) total.samplesPassed.reset();
+  if (!havePrims) total.primitivesSubmitted.reset();
+  if (!haveGpu) total.gpuMs.reset();
+  const double mean = std::accumulate(frameMs.begin(), frameMs.end(), 0.0) / static_cast<double>(frameMs.size());
+  out << "  ],\n  \"total\": {\"passes\": " << passes.size() << ", \"draw_calls\": " << total.drawCalls
+      << ", \"triangles\": " << total.triangles << ", \"samples_passed\": " << jsonNumber(total.samplesPassed)
+      << ", \"primitives_submitted\": " << jsonNumber(total.primitivesSubmitted)
+      << ", \"gpu_ms\": " << jsonNumber(total.gpuMs) << ", \"cpu_ms\": " << jsonNumber(total.cpuMs) << "},\n"
+      << "  \"frame_ms\": {\"mean\": " << jsonNumber(mean)
+      << ", \"min\": " << jsonNumber(*std::min_element(frameMs.begin(), frameMs.end()))
+      << ", \"max\": " << jsonNumber(*std::max_element(frameMs.begin(), frameMs.end())) << "}\n}\n";
+  return out.str();
+}
+
+std::filesystem::path rawPathBeside(const std::filesystem::path& picture) {
+  std::filesystem::path raw = picture;
+  raw.replace_extension(".raw.png");
+  return raw;
+}
+
+Image stencilPicture(const CommandLine& cl, const Image& stencil) {
+  return cl.stencilBitPlanes ? stencilBitPlanes(stencil) : stencilRamp(stencil);
+}
+
+int runHeadless(Session& s) {
+  const CommandLine& cl = s.commandLine;
+  const int frames = cl.frames.value_or(1);
+  std::vector<double> frameMs;
+  for (int i = 0; i < frames; ++i) {
+    const bool last = i + 1 == frames;
+    FrameRequest request{.measure = cl.stats, .captureAll = last && cl.passesDir.has_value(), .captureOnly = {}};
+    const auto start = std::chrono::steady_clock::now();
+    s.renderFrame(cl.time + i / 60.0, request);
+    glFinish();
+    frameMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    if (frames > 1 && !cl.quiet && (i + 1) % 60 == 0)
+      std::cerr << "frame " << i + 1 << "/" << frames << "\n";
+  }
+  return finishRun(s, s.framebuffer->readColour(), s.framebuffer->readStencil(), frameMs);
+}
+
+}  // namespace
+
+int finishRun(Session& s, const Image& colour, const Image& stencil, const std::vector<double>& frameMs) {
+  const CommandLine& cl = s.commandLine;
+  if (cl.out) writePng(*cl.out, colour);
+  if (cl.stencilOut) {
+    writePng(*cl.stencilOut, stencilPicture(cl, stencil));
+    writePng(rawPathBeside(*cl.stencilOut), stencil);
+  }
+  if (cl.passesDir) {
+    int index = 1;
+    for (const Snapshot& snap : s.recorder->snapshots()) {
+      char prefix[16];
+      std::snprintf(prefix, sizeof prefix, "%02d-", index++);
+      writePng(*cl.passesDir / (prefix + snap.pass + ".png"), snap.colour);
+      writePng(*cl.passesDir / (prefix + snap.pass + ".stencil.png"), stencilPicture(cl, snap.stencil));
+    }
+  }
+  if (cl.stats && !frameMs.empty()) std::cout << statsJson(s, frameMs);
+  if (cl.golden) {
+    if (cl.updateGolden) {
+      writeGolden(colour, stencil, *cl.golden, s.variant);
+      std::cerr << "wrote " << goldenColourPath(*cl.golden, s.variant).string() << " and "
+                << goldenStencilPath(*cl.golden, s.variant).string() << "\n";
+      return 0;
+    }
+    const auto artifacts = cl.artifacts.value_or(std::filesystem::path("golden-artifacts") / s.info.id /
+                                                 (s.variant + "-" + backendName(s.context->backend())));
+    const GoldenResult result = checkGolden(colour, stencil, *cl.golden, s.variant, artifacts);
+    std::cerr << (result.passed ? "golden ok: " : "golden FAILED: ") << result.message << "\n";
+    return result.passed ? 0 : 1;
+  }
+  return 0;
+}
+
+int runLesson(const LessonInfo& info, const LessonFactory& factory, int argc, char** argv) {
+  const std::string program = std::filesystem::path(argv[0]).filename().string();
+  bool golden = false;
+  try {
+    const CommandLine cl = parseCommandLine(info, argc, argv);
+    golden = cl.golden.has_value();
+    if (cl.help) {
+      std::cout << helpText(info, program);
+      return 0;
+    }
+    if (cl.listVariants) {
+      std::cout << variantList(info);
+      return 0;
+    }
+    setShaderDirFlag(cl.shaderDir);
+    BackendChoice choice = chooseBackend(cl.backend, cl.headless);
+    std::unique_ptr<Session> session;
+    try {
+      session = std::make_unique<Session>(info, factory, cl, choice.backend);
+    } catch (const NoContextError& e) {
+      // The automatic choice falls back to EGL when OSMesa cannot make a context.
+      if (cl.backend || choice.backend != Backend::Osmesa) throw;
+      choice = {Backend::Egl, std::string("OSMesa failed (") + e.what() + ")"};
+      session = std::make_unique<Session>(info, factory, cl, choice.backend);
+    }
+    if (!cl.quiet) {
+      const GlFeatures& f = session->context->features();
+      std::cerr << "backend: " << backendName(choice.backend) << " (" << choice.reason << "); " << f.renderer
+                << ", GL " << f.major << "." << f.minor << "; " << f.summary() << "\n";
+    }
+    return choice.backend == Backend::Window ? runWindow(*session) : runHeadless(*session);
+  } catch (const UsageError& e) {
+    std::cerr << program << ": error: " << e.what() << "\n";
+    return 2;
+  } catch (const NoContextError& e) {
+    std::cerr << program << ": no OpenGL context: " << e.what() << "\n";
+    return golden ? 77 : 1;
+  } catch (const std::exception& e) {
+    std::cerr << program << ": " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace stencil

@@ -1,0 +1,102 @@
+// The lesson model. A lesson declares what it is (LessonInfo) and renders one frame at a
+// time into a verified framebuffer (Lesson::render). Everything else — the command line,
+// the backends, the window, stats, snapshots, goldens — is the framework's, the same for
+// every lesson. The stencil, depth, colour-mask and cull calls stay in the lesson.
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/context.h"
+
+namespace stencil {
+
+// A classroom toggle: an integer the lesson reads each frame, cycled by a key in the window.
+// max == 1 makes it an on/off switch.
+struct Option {
+  std::string name;
+  char key;
+  std::string help;
+  int value = 0;
+  int max = 1;
+};
+
+enum class Feature { DepthBoundsTest, PipelineStatistics, ClipControl, DepthClamp, KhrDebug };
+const char* featureName(Feature);
+bool hasFeature(const GlFeatures&, Feature);
+
+// A named configuration of the options, e.g. "stencil-off" to show the artifact.
+struct Variant {
+  std::string name;
+  std::string help;
+  std::vector<std::pair<std::string, int>> settings;  // option name, value
+  std::vector<Feature> needs = {};                    // beyond what the lesson needs
+};
+
+struct OrbitCamera {
+  glm::vec3 target{0.0f};
+  float distance = 6.0f;
+  float azimuthDeg = 30.0f;    // around +y, 0 looks down -z
+  float elevationDeg = 25.0f;  // above the xz plane
+  float fovyDeg = 45.0f;
+  float nearPlane = 0.1f, farPlane = 100.0f;
+
+  glm::vec3 eye() const;
+  glm::mat4 view() const;
+  glm::mat4 projection(float aspect) const;
+};
+
+struct LessonInfo {
+  std::string id;     // "00-stencil-basics": folder, shader folder, golden folder
+  std::string title;  // "Stencil basics"
+  std::string summary;
+  int stencilBits = 8;
+  std::vector<Feature> needs;
+  std::vector<Option> options;
+  std::vector<Variant> variants;  // the first is the default
+  std::vector<std::string> passes;
+  OrbitCamera camera;
+};
+
+class PassRecorder;
+
+// What a lesson sees while it renders one frame.
+class Frame {
+ public:
+  Frame(double time, glm::ivec2 size, const OrbitCamera&, const std::vector<Option>&, PassRecorder&,
+        const GlFeatures&);
+
+  const double time;  // seconds; every animation is a function of it
+  const glm::ivec2 size;
+  const glm::mat4 view, projection;
+  const glm::vec3 eye;
+  const GlFeatures& features;
+
+  int option(std::string_view name) const;  // unknown names throw: a typo is a bug
+  bool on(std::string_view name) const { return option(name) != 0; }
+  void pass(std::string_view name);  // marks the end of a named pass
+
+ private:
+  const std::vector<Option>& options_;
+  PassRecorder& recorder_;
+};
+
+class Lesson {
+ public:
+  virtual ~Lesson() = default;
+  // Called with the lesson's framebuffer bound, cleared to nothing: the lesson clears.
+  virtual void render(Frame&) = 0;
+};
+
+// The lesson's constructor runs with a current context (it creates its GL objects).
+using LessonFactory = std::function<std::unique_ptr<Lesson>()>;
+
+// The whole program: parse the command line, make a context, run headless or in a window.
+int runLesson(const LessonInfo&, const LessonFactory&, int argc, char** argv);
+
+}  // namespace stencil

@@ -1,0 +1,159 @@
+#include "gl/options.h"
+
+#include <charconv>
+#include <sstream>
+
+#include "gl/errors.h"
+
+namespace stencil {
+namespace {
+
+template <typename T>
+T parseNumber(const std::string& flag, const std::string& text) {
+  T value{};
+  const char* end = text.data() + text.size();
+  auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (ec != std::errc() || ptr != end) throw UsageError(flag + " expects a number, got '" + text + "'");
+  return value;
+}
+
+}  // namespace
+
+const Variant& findVariant(const LessonInfo& info, const std::string& name) {
+  if (name.empty()) return info.variants.front();
+  for (const Variant& v : info.variants)
+    if (v.name == name) return v;
+  throw UsageError("unknown variant '" + name + "'; --list-variants shows them");
+}
+
+std::vector<Option> optionsFor(const LessonInfo& info, const std::string& variant,
+                               const std::vector<std::pair<std::string, int>>& settings) {
+  std::vector<Option> options = info.options;
+  auto apply = [&](const std::string& name, int value) {
+    for (Option& o : options)
+      if (o.name == name) {
+        if (value < 0 || value > o.max)
+          throw UsageError("option '" + name + "' takes 0.." + std::to_string(o.max) + ", got " +
+                           std::to_string(value));
+        o.value = value;
+        return;
+      }
+    throw UsageError("unknown option '" + name + "'; --help lists the options");
+  };
+  for (const auto& [name, value] : findVariant(info, variant).settings) apply(name, value);
+  for (const auto& [name, value] : settings) apply(name, value);
+  return options;
+}
+
+CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
+  CommandLine cl;
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw UsageError(flag + " needs a value; --help shows the flags");
+      return argv[++i];
+    };
+    if (flag == "--help" || flag == "-h") cl.help = true;
+    else if (flag == "--list-variants") cl.listVariants = true;
+    else if (flag == "--headless") cl.headless = true;
+    else if (flag == "--backend") {
+      const std::string name = value();
+      cl.backend = parseBackend(name);
+      if (!cl.backend) throw UsageError("--backend takes osmesa, egl or window, got '" + name + "'");
+    } else if (flag == "--size") {
+      const std::string s = value();
+      const auto x = s.find('x');
+      if (x == std::string::npos) throw UsageError("--size expects WxH, got '" + s + "'");
+      cl.width = parseNumber<int>("--size", s.substr(0, x));
+      cl.height = parseNumber<int>("--size", s.substr(x + 1));
+      if (cl.width < 1 || cl.height < 1 || cl.width > 8192 || cl.height > 8192)
+        throw UsageError("--size must be between 1x1 and 8192x8192, got '" + s + "'");
+    } else if (flag == "--time") cl.time = parseNumber<double>(flag, value());
+    else if (flag == "--frames") {
+      cl.frames = parseNumber<int>(flag, value());
+      if (*cl.frames < 1) throw UsageError("--frames must be at least 1");
+    } else if (flag == "--variant") cl.variant = value();
+    else if (flag == "--set") {
+      const std::string s = value();
+      const auto eq = s.find('=');
+      if (eq == std::string::npos) throw UsageError("--set expects NAME=VALUE, got '" + s + "'");
+      cl.settings.emplace_back(s.substr(0, eq), parseNumber<int>("--set " + s.substr(0, eq), s.substr(eq + 1)));
+    } else if (flag == "--out") cl.out = value();
+    else if (flag == "--stencil-out") cl.stencilOut = value();
+    else if (flag == "--stencil-view") {
+      const std::string v = value();
+      if (v != "ramp" && v != "bits") throw UsageError("--stencil-view takes ramp or bits, got '" + v + "'");
+      cl.stencilBitPlanes = v == "bits";
+    } else if (flag == "--passes") cl.passesDir = value();
+    else if (flag == "--stats") cl.stats = true;
+    else if (flag == "--golden") cl.golden = value();
+    else if (flag == "--update-golden") cl.updateGolden = true;
+    else if (flag == "--artifacts") cl.artifacts = value();
+    else if (flag == "--shader-dir") cl.shaderDir = value();
+    else if (flag == "--stencil-bits") {
+      cl.stencilBits = parseNumber<int>(flag, value());
+      if (cl.stencilBits != 0 && cl.stencilBits != 8) throw UsageError("--stencil-bits takes 8 or 0");
+    } else if (flag == "--quiet" || flag == "-q") cl.quiet = true;
+    else throw UsageError("unknown flag '" + flag + "'; --help shows the flags");
+  }
+  if (cl.updateGolden && !cl.golden) throw UsageError("--update-golden needs --golden DIR");
+  if (cl.headless && cl.backend == Backend::Window) throw UsageError("--headless contradicts --backend window");
+  optionsFor(info, cl.variant, cl.settings);  // validates --variant and --set now, not after start-up
+  return cl;
+}
+
+std::string variantList(const LessonInfo& info) {
+  std::ostringstream out;
+  for (const Variant& v : info.variants) out << v.name << "\t" << v.help << "\n";
+  return out.str();
+}
+
+std::string helpText(const LessonInfo& info, const std::string& program) {
+  std::ostringstream out;
+  out << info.id << ": " << info.title << "\n" << info.summary << "\n\n"
+      << "usage: " << program << " [flags]\n\n"
+      << "Context\n"
+      << "  --headless               render off-screen even when a display exists\n"
+      << "  --backend NAME           osmesa | egl | window (default: window if a display exists,\n"
+      << "                           else osmesa where built in, else egl)\n"
+      << "  --size WxH               framebuffer size (default 640x480)\n"
+      << "  --shader-dir DIR         look for shaders here first (also $STENCIL_SHADER_DIR)\n"
+      << "  --stencil-bits 8|0       0 builds a framebuffer without stencil, to see the check refuse it\n\n"
+      << "What to render\n"
+      << "  --time T                 seconds into the animation (default 0)\n"
+      << "  --frames N               render N frames, 1/60 s apart (default 1 headless; a window\n"
+      << "                           runs until closed)\n"
+      << "  --variant NAME           a named configuration (default: the first)\n"
+      << "  --list-variants          print the variants and exit\n"
+      << "  --set NAME=VALUE         set one option after the variant's settings\n\n"
+      << "Output (of the last frame)\n"
+      << "  --out FILE.png           the colour image\n"
+      << "  --stencil-out FILE.png   the stencil buffer as a picture with a legend; the raw values\n"
+      << "                           go beside it as FILE.raw.png (one grey byte per pixel)\n"
+      << "  --stencil-view ramp|bits the picture: colour per value (default) or the 8 bit planes\n"
+      << "  --passes DIR             colour and stencil after each named pass\n"
+      << "  --stats                  JSON on stdout: per pass draw calls, triangles, fragments\n"
+      << "                           passed, primitives, GPU and CPU time (null where the driver\n"
+      << "                           has no query for it)\n"
+      << "  --quiet                  no context line on stderr\n\n"
+      << "Golden tests\n"
+      << "  --golden DIR             compare with DIR/VARIANT.png and DIR/VARIANT.stencil.png;\n"
+      << "                           exit 1 on a difference, 77 when no context can be made\n"
+      << "  --update-golden          write the goldens instead of comparing\n"
+      << "  --artifacts DIR          where a failed comparison leaves its images and summary.json\n\n"
+      << "Window keys: drag to orbit, wheel to zoom, R resets the camera, V next variant,\n"
+      << "P steps through the passes, Tab cycles colour/stencil/bit planes, Space pauses,\n"
+      << "S saves a screenshot, Esc quits.\n";
+  if (!info.options.empty()) {
+    out << "\nOptions (--set NAME=VALUE, or the key in the window)\n";
+    for (const Option& o : info.options)
+      out << "  " << o.name << " [" << o.key << "] 0.." << o.max << " (default " << o.value << ")  "
+          << o.help << "\n";
+  }
+  out << "\nVariants\n";
+  for (const Variant& v : info.variants) out << "  " << v.name << "  " << v.help << "\n";
+  out << "\nExit codes: 0 ok, 1 rendering failed or a golden differs, 2 bad input, 77 no GL context.\n";
+  return out.str();
+}
+
+}  // namespace stencil

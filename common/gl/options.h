@@ -1,0 +1,42 @@
+// The command line every lesson shares (--help prints it).
+#pragma once
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gl/context.h"
+#include "gl/lesson.h"
+
+namespace stencil {
+
+struct CommandLine {
+  bool help = false;
+  bool listVariants = false;
+  bool headless = false;
+  std::optional<Backend> backend;
+  int width = 640, height = 480;
+  double time = 0.0;
+  std::optional<int> frames;  // headless: 1 unless given; window: until closed unless given
+  std::string variant;        // empty: the lesson's first
+  std::vector<std::pair<std::string, int>> settings;  // --set NAME=VALUE
+  std::optional<std::filesystem::path> out, stencilOut, passesDir, golden, artifacts, shaderDir;
+  int stencilBits = 8;            // --stencil-bits 0 builds a framebuffer without stencil
+  bool stencilBitPlanes = false;  // --stencil-view bits
+  bool stats = false;
+  bool updateGolden = false;
+  bool quiet = false;
+};
+
+// Throws UsageError with one line for anything it does not understand.
+CommandLine parseCommandLine(const LessonInfo&, int argc, char** argv);
+std::string helpText(const LessonInfo&, const std::string& program);
+std::string variantList(const LessonInfo&);
+
+// The lesson's options with the variant's settings and then --set applied.
+// Throws UsageError for an unknown variant, option or out-of-range value.
+std::vector<Option> optionsFor(const LessonInfo&, const std::string& variant,
+                               const std::vector<std::pair<std::string, int>>& settings);
+const Variant& findVariant(const LessonInfo&, const std::string& name);
+
+}  // namespace stencil

@@ -1,0 +1,110 @@
+#include "gl/recorder.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "gl/debug.h"
+#include "gl/gl.h"
+
+namespace stencil {
+namespace {
+
+PassStats* counting = nullptr;  // the pass draws are counted into
+
+std::uint64_t queryResult(unsigned query) {
+  GLuint64 value = 0;
+  glGetQueryObjectui64v(query, GL_QUERY_RESULT, &value);
+  return value;
+}
+
+}  // namespace
+
+void countDraw(std::uint64_t triangles) {
+  if (!counting) return;
+  counting->drawCalls += 1;
+  counting->triangles += triangles;
+}
+
+PassRecorder::PassRecorder(std::vector<std::string> declaredPasses, const Framebuffer& framebuffer,
+                           const GlFeatures& features)
+    : declared_(std::move(declaredPasses)),
+      framebuffer_(framebuffer),
+      pipelineStatistics_(features.pipelineStatistics) {}
+
+PassRecorder::~PassRecorder() {
+  for (auto& q : queries_) {
+    glDeleteQueries(1, &q.samples);
+    glDeleteQueries(1, &q.time);
+    if (q.primitives) glDeleteQueries(1, &q.primitives);
+  }
+  counting = nullptr;
+}
+
+void PassRecorder::beginFrame(FrameRequest request) {
+  request_ = request;
+  stats_.clear();
+  snapshots_.clear();
+  checkGlErrors("before the frame");
+  beginPass();
+}
+
+void PassRecorder::beginPass() {
+  current_ = PassStats{};
+  counting = &current_;
+  if (request_.measure) {
+    if (queries_.size() <= stats_.size()) {
+      Queries q;
+      glGenQueries(1, &q.samples);
+      glGenQueries(1, &q.time);
+      if (pipelineStatistics_) glGenQueries(1, &q.primitives);
+      queries_.push_back(q);
+    }
+    const Queries& q = queries_[stats_.size()];
+    glBeginQuery(GL_SAMPLES_PASSED, q.samples);
+    glBeginQuery(GL_TIME_ELAPSED, q.time);
+    if (q.primitives) glBeginQuery(GL_PRIMITIVES_SUBMITTED_ARB, q.primitives);
+  }
+  passStart_ = std::chrono::steady_clock::now();
+}
+
+void PassRecorder::pass(std::string_view name) {
+  if (std::find(declared_.begin(), declared_.end(), name) == declared_.end())
+    throw std::logic_error("pass '" + std::string(name) + "' is not declared by the lesson");
+  current_.name = name;
+  if (request_.measure) {
+    const Queries& q = queries_[stats_.size()];
+    glEndQuery(GL_SAMPLES_PASSED);
+    glEndQuery(GL_TIME_ELAPSED);
+    if (q.primitives) glEndQuery(GL_PRIMITIVES_SUBMITTED_ARB);
+    glFinish();  // so the CPU time includes the GPU work it issued
+  }
+  current_.cpuMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - passStart_).count();
+  checkGlErrors("in pass '" + current_.name + "'");
+  const std::size_t index = stats_.size();
+  stats_.push_back(current_);
+  if (request_.captureAll || request_.captureOnly == index)
+    snapshots_.push_back({current_.name, framebuffer_.readColour(), framebuffer_.readStencil()});
+  framebuffer_.bind();  // reading may have changed the read binding; keep drawing into ours
+  beginPass();
+}
+
+void PassRecorder::endFrame() {
+  if (request_.measure) {
+    glEndQuery(GL_SAMPLES_PASSED);
+    glEndQuery(GL_TIME_ELAPSED);
+    if (pipelineStatistics_) glEndQuery(GL_PRIMITIVES_SUBMITTED_ARB);
+  }
+  counting = nullptr;
+  if (current_.drawCalls > 0)
+    throw std::logic_error("draw calls after the last named pass: mark it with frame.pass()");
+  checkGlErrors("at the end of the frame");
+  if (!request_.measure) return;
+  for (std::size_t i = 0; i < stats_.size(); ++i) {
+    stats_[i].samplesPassed = queryResult(queries_[i].samples);
+    stats_[i].gpuMs = static_cast<double>(queryResult(queries_[i].time)) / 1e6;
+    if (queries_[i].primitives) stats_[i].primitivesSubmitted = queryResult(queries_[i].primitives);
+  }
+}
+
+}  // namespace stencil

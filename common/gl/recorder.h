@@ -1,0 +1,73 @@
+// The pass recorder: a lesson marks the end of each named pass; the recorder counts draw
+// calls and triangles, runs occlusion/timer/statistics queries around each pass for
+// --stats, checks for GL errors, and captures colour and stencil after the passes asked
+// for. Tests, docs figures and the window's pass stepping all use this one mechanism.
+#pragma once
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "gl/context.h"
+#include "gl/framebuffer.h"
+#include "gl/image.h"
+
+namespace stencil {
+
+struct PassStats {
+  std::string name;
+  std::uint64_t drawCalls = 0;
+  std::uint64_t triangles = 0;                      // counted on the CPU at each draw
+  std::optional<std::uint64_t> samplesPassed;       // occlusion query: fragments that passed
+  std::optional<std::uint64_t> primitivesSubmitted; // ARB_pipeline_statistics_query, if present
+  std::optional<double> gpuMs;                      // timer query
+  double cpuMs = 0;
+};
+
+struct Snapshot {
+  std::string pass;
+  Image colour, stencil;
+};
+
+struct FrameRequest {
+  bool measure = false;                   // run queries (costs a little)
+  bool captureAll = false;                // a snapshot after every pass
+  std::optional<std::size_t> captureOnly; // a snapshot after the pass with this index only
+};
+
+class PassRecorder {
+ public:
+  PassRecorder(std::vector<std::string> declaredPasses, const Framebuffer&, const GlFeatures&);
+  ~PassRecorder();
+
+  void beginFrame(FrameRequest);
+  void pass(std::string_view name);  // the end of a named pass
+  void endFrame();                   // reads the queries back
+
+  const std::vector<std::string>& declaredPasses() const { return declared_; }
+  const std::vector<PassStats>& passStats() const { return stats_; }  // last frame
+  const std::vector<Snapshot>& snapshots() const { return snapshots_; }
+
+ private:
+  void beginPass();
+  struct Queries {
+    unsigned samples = 0, time = 0, primitives = 0;
+  };
+
+  std::vector<std::string> declared_;
+  const Framebuffer& framebuffer_;
+  bool pipelineStatistics_;
+  FrameRequest request_;
+  std::vector<PassStats> stats_;
+  std::vector<Queries> queries_;  // one set per pass of the frame, reused across frames
+  std::vector<Snapshot> snapshots_;
+  PassStats current_;
+  std::chrono::steady_clock::time_point passStart_;
+};
+
+// Called by every counted draw (GpuMesh::draw).
+void countDraw(std::uint64_t triangles);
+
+}  // namespace stencil

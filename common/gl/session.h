@@ -1,0 +1,49 @@
+// Everything one run of a lesson holds, shared by the headless and the window paths.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/context.h"
+#include "gl/framebuffer.h"
+#include "gl/image.h"
+#include "gl/lesson.h"
+#include "gl/options.h"
+#include "gl/recorder.h"
+
+namespace stencil {
+
+class Session {
+ public:
+  // Makes the context, checks the lesson's needs, builds and verifies the framebuffer,
+  // then constructs the lesson.
+  Session(const LessonInfo&, const LessonFactory&, const CommandLine&, Backend);
+
+  void setVariant(const std::string& name);  // resets the options to the variant's
+  void resize(int width, int height);        // a new framebuffer (the window was resized)
+  // Renders one frame at `time` into the framebuffer; the recorder holds its passes.
+  void renderFrame(double time, FrameRequest);
+
+  const LessonInfo& info;
+  const CommandLine& commandLine;
+  std::unique_ptr<Context> context;
+  std::unique_ptr<Framebuffer> framebuffer;
+  std::unique_ptr<PassRecorder> recorder;
+  std::unique_ptr<Lesson> lesson;
+  std::string variant;
+  std::vector<Option> options;
+  OrbitCamera camera;
+
+ private:
+  void checkNeeds(const std::vector<Feature>&, const std::string& who) const;
+  void makeFramebuffer(int width, int height);
+};
+
+// The interactive loop (window_ui.cpp). Returns the exit code.
+int runWindow(Session&);
+
+// Writes what the command line asked for from the last frame (--out, --stencil-out,
+// --passes, --stats, --golden). Returns the exit code.
+int finishRun(Session&, const Image& colour, const Image& stencil, const std::vector<double>& frameMs);
+
+}  // namespace stencil

@@ -1,0 +1,139 @@
+#include "gl/shader.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <utility>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gl/errors.h"
+
+namespace stencil {
+namespace {
+
+std::optional<std::filesystem::path> shaderDirFlag;
+
+std::string readText(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+GLuint compile(GLenum stage, const std::string& relative) {
+  const std::filesystem::path path = findShader(relative);
+  const std::string source = readText(path);
+  const char* text = source.c_str();
+  GLuint shader = glCreateShader(stage);
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<size_t>(std::max(length, 1)), '\0');
+    glGetShaderInfoLog(shader, length, nullptr, log.data());
+    glDeleteShader(shader);
+    throw UsageError(formatCompileLog(path.string(), log.c_str()));
+  }
+  return shader;
+}
+
+}  // namespace
+
+void setShaderDirFlag(std::optional<std::filesystem::path> dir) { shaderDirFlag = std::move(dir); }
+
+std::vector<std::filesystem::path> shaderSearchPath() {
+  if (shaderDirFlag) return {*shaderDirFlag};
+  if (const char* env = std::getenv("STENCIL_SHADER_DIR"); env && *env) return {env};
+  return {std::filesystem::path(STENCIL_SOURCE_DIR) / "shaders"};
+}
+
+std::filesystem::path findShader(const std::string& relative) {
+  std::string tried;
+  for (const auto& dir : shaderSearchPath()) {
+    std::filesystem::path candidate = dir / relative;
+    if (std::filesystem::is_regular_file(candidate)) return candidate;
+    tried += (tried.empty() ? "" : ", ") + candidate.string();
+  }
+  throw UsageError("shader '" + relative + "' not found; tried: " + tried);
+}
+
+std::string formatCompileLog(const std::string& file, const std::string& log) {
+  static const std::regex mesa(R"(^\s*\d+:(\d+)\(\d+\):\s*(.*)$)");
+  static const std::regex nvidia(R"(^\s*\d+\((\d+)\)\s*:\s*(.*)$)");
+  std::istringstream lines(log);
+  std::string line, out;
+  while (std::getline(lines, line)) {
+    std::smatch m;
+    if (std::regex_match(line, m, mesa) || std::regex_match(line, m, nvidia))
+      out += (out.empty() ? "" : "\n") + file + ":" + m[1].str() + ": " + m[2].str();
+    else if (!line.empty())
+      out += (out.empty() ? "" : "\n") + file + ": " + line;
+  }
+  return out.empty() ? file + ": compile failed with an empty log" : out;
+}
+
+Program::Program(const std::string& vertexFile, const std::string& fragmentFile) {
+  GLuint vs = compile(GL_VERTEX_SHADER, vertexFile);
+  GLuint fs = 0;
+  try {
+    fs = compile(GL_FRAGMENT_SHADER, fragmentFile);
+  } catch (...) {
+    glDeleteShader(vs);
+    throw;
+  }
+  id_ = glCreateProgram();
+  glAttachShader(id_, vs);
+  glAttachShader(id_, fs);
+  glLinkProgram(id_);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetProgramiv(id_, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<size_t>(std::max(length, 1)), '\0');
+    glGetProgramInfoLog(id_, length, nullptr, log.data());
+    glDeleteProgram(id_);
+    id_ = 0;
+    throw UsageError(vertexFile + " + " + fragmentFile + ": link failed: " + log.c_str());
+  }
+}
+
+Program::~Program() {
+  if (id_) glDeleteProgram(id_);
+}
+Program::Program(Program&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
+Program& Program::operator=(Program&& other) noexcept {
+  std::swap(id_, other.id_);
+  return *this;
+}
+
+void Program::use() const { glUseProgram(id_); }
+void Program::set(const char* name, const glm::mat4& m) const {
+  use();
+  glUniformMatrix4fv(glGetUniformLocation(id_, name), 1, GL_FALSE, glm::value_ptr(m));
+}
+void Program::set(const char* name, const glm::vec4& v) const {
+  use();
+  glUniform4fv(glGetUniformLocation(id_, name), 1, glm::value_ptr(v));
+}
+void Program::set(const char* name, const glm::vec3& v) const {
+  use();
+  glUniform3fv(glGetUniformLocation(id_, name), 1, glm::value_ptr(v));
+}
+void Program::set(const char* name, float v) const {
+  use();
+  glUniform1f(glGetUniformLocation(id_, name), v);
+}
+void Program::set(const char* name, int v) const {
+  use();
+  glUniform1i(glGetUniformLocation(id_, name), v);
+}
+
+}  // namespace stencil

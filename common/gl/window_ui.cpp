@@ -1,0 +1,263 @@
+// The classroom window: the lesson's framebuffer shown in a GLFW window, a Dear ImGui
+// panel with the lesson's toggles, pass stepping through the pass recorder, the stencil
+// inspector, an orbit camera and screenshots.
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <iostream>
+
+#include "gl/session.h"
+#include "gl/stencil_view.h"
+
+namespace stencil {
+namespace {
+
+enum class View { Colour, StencilRamp, StencilBits };
+
+struct WindowState {
+  Session& session;
+  double time;
+  bool paused = false;
+  View view = View::Colour;
+  int passStep = -1;  // -1: the finished frame; k: the snapshot after pass k
+  bool dragging = false;
+  double lastX = 0, lastY = 0;
+  bool screenshot = false;
+  int screenshots = 0;
+};
+
+WindowState& stateOf(GLFWwindow* w) { return *static_cast<WindowState*>(glfwGetWindowUserPointer(w)); }
+
+void onKey(GLFWwindow* w, int key, int, int action, int mods) {
+  if (action != GLFW_PRESS || ImGui::GetIO().WantCaptureKeyboard) return;
+  WindowState& st = stateOf(w);
+  Session& s = st.session;
+  const int passCount = static_cast<int>(s.info.passes.size());
+  switch (key) {
+    case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(w, GLFW_TRUE); return;
+    case GLFW_KEY_SPACE: st.paused = !st.paused; return;
+    case GLFW_KEY_TAB: st.view = static_cast<View>((static_cast<int>(st.view) + 1) % 3); return;
+    case GLFW_KEY_P:
+      st.passStep = (mods & GLFW_MOD_SHIFT) ? (st.passStep < 0 ? passCount - 1 : st.passStep - 1)
+                                            : (st.passStep + 1 >= passCount ? -1 : st.passStep + 1);
+      return;
+    case GLFW_KEY_S: st.screenshot = true; return;
+    case GLFW_KEY_R: s.camera = s.info.camera; return;
+    case GLFW_KEY_V: {
+      const auto& vs = s.info.variants;
+      auto it = std::find_if(vs.begin(), vs.end(), [&](const Variant& v) { return v.name == s.variant; });
+      s.setVariant(std::next(it) == vs.end() ? vs.front().name : std::next(it)->name);
+      return;
+    }
+    default: break;
+  }
+  for (Option& o : s.options)
+    if (std::toupper(static_cast<unsigned char>(o.key)) == key) o.value = (o.value + 1) % (o.max + 1);
+}
+
+void onMouseButton(GLFWwindow* w, int button, int action, int) {
+  WindowState& st = stateOf(w);
+  if (button != GLFW_MOUSE_BUTTON_LEFT) return;
+  st.dragging = action == GLFW_PRESS && !ImGui::GetIO().WantCaptureMouse;
+  glfwGetCursorPos(w, &st.lastX, &st.lastY);
+}
+
+void onCursor(GLFWwindow* w, double x, double y) {
+  WindowState& st = stateOf(w);
+  if (!st.dragging) return;
+  OrbitCamera& c = st.session.camera;
+  c.azimuthDeg -= static_cast<float>(x - st.lastX) * 0.4f;
+  c.elevationDeg = std::clamp(c.elevationDeg + static_cast<float>(y - st.lastY) * 0.4f, -89.0f, 89.0f);
+  st.lastX = x, st.lastY = y;
+}
+
+void onScroll(GLFWwindow* w, double, double dy) {
+  if (ImGui::GetIO().WantCaptureMouse) return;
+  OrbitCamera& c = stateOf(w).session.camera;
+  c.distance = std::clamp(c.distance * static_cast<float>(std::pow(0.9, dy)), 0.5f, 80.0f);
+}
+
+// Shows an image (top row first) in the window, scaled to fit, centred.
+class Display {
+ public:
+  Display() {
+    glGenTextures(1, &texture_);
+    glGenFramebuffers(1, &fbo_);
+  }
+  ~Display() {
+    glDeleteTextures(1, &texture_);
+    glDeleteFramebuffers(1, &fbo_);
+  }
+  void show(const Image& image, int windowW, int windowH) {
+    glBindTexture(GL_TEXTURE_2D, texture_);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 image.pixels.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_, 0);
+    blitFit(image.width, image.height, windowW, windowH, true);
+  }
+  // The framebuffer bound for reading is shown as it is (bottom row first, GL's way).
+  static void blitFit(int w, int h, int windowW, int windowH, bool flip) {
+    const float scale = std::min(static_cast<float>(windowW) / static_cast<float>(w),
+                                 static_cast<float>(windowH) / static_cast<float>(h));
+    const int dw = static_cast<int>(static_cast<float>(w) * scale), dh = static_cast<int>(static_cast<float>(h) * scale);
+    const int x0 = (windowW - dw) / 2, y0 = (windowH - dh) / 2;
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBlitFramebuffer(0, 0, w, h, x0, flip ? y0 + dh : y0, x0 + dw, flip ? y0 : y0 + dh, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
+  }
+
+ private:
+  GLuint texture_ = 0, fbo_ = 0;
+};
+
+void drawPanel(WindowState& st, double fps) {
+  Session& s = st.session;
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowBgAlpha(0.75f);
+  ImGui::Begin(s.info.id.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::TextUnformatted(s.info.title.c_str());
+  if (ImGui::BeginCombo("variant [V]", s.variant.c_str())) {
+    for (const Variant& v : s.info.variants)
+      if (ImGui::Selectable(v.name.c_str(), v.name == s.variant)) s.setVariant(v.name);
+    ImGui::EndCombo();
+  }
+  for (Option& o : s.options) {
+    const std::string label = o.name + " [" + o.key + "]";
+    if (o.max == 1) {
+      bool on = o.value != 0;
+      if (ImGui::Checkbox(label.c_str(), &on)) o.value = on ? 1 : 0;
+    } else {
+      ImGui::SliderInt(label.c_str(), &o.value, 0, o.max);
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", o.help.c_str());
+  }
+  ImGui::Separator();
+  int view = static_cast<int>(st.view);
+  ImGui::RadioButton("colour", &view, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("stencil", &view, 1);
+  ImGui::SameLine();
+  ImGui::RadioButton("bit planes [Tab]", &view, 2);
+  st.view = static_cast<View>(view);
+  const int passCount = static_cast<int>(s.info.passes.size());
+  const char* passName = st.passStep < 0 ? "finished frame" : s.info.passes[static_cast<size_t>(st.passStep)].c_str();
+  ImGui::SliderInt("after pass [P]", &st.passStep, -1, passCount - 1, passName);
+  ImGui::Checkbox("pause [Space]", &st.paused);
+  ImGui::SameLine();
+  ImGui::Text("t = %.2f s", st.time);
+  ImGui::Separator();
+  std::uint64_t draws = 0, triangles = 0;
+  for (const PassStats& p : s.recorder->passStats()) draws += p.drawCalls, triangles += p.triangles;
+  ImGui::Text("%.0f fps, %llu draw calls, %llu triangles", fps, static_cast<unsigned long long>(draws),
+              static_cast<unsigned long long>(triangles));
+  ImGui::TextUnformatted("drag: orbit  wheel: zoom  R: reset  S: screenshot  Esc: quit");
+  ImGui::End();
+}
+
+}  // namespace
+
+int runWindow(Session& s) {
+  GLFWwindow* window = s.context->window();
+  const CommandLine& cl = s.commandLine;
+  WindowState st{.session = s, .time = cl.time};
+  glfwSetWindowUserPointer(window, &st);
+  // Ours first: ImGui chains to the callbacks installed before it.
+  glfwSetKeyCallback(window, onKey);
+  glfwSetMouseButtonCallback(window, onMouseButton);
+  glfwSetCursorPosCallback(window, onCursor);
+  glfwSetScrollCallback(window, onScroll);
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+
+  int exitCode = 0;
+  {
+    Display display;
+    double last = glfwGetTime(), fps = 0;
+    for (int frame = 0; !glfwWindowShouldClose(window); ++frame) {
+      glfwPollEvents();
+      int w = 0, h = 0;
+      glfwGetFramebufferSize(window, &w, &h);
+      if (w == 0 || h == 0) continue;  // minimised
+      if (w != s.framebuffer->width() || h != s.framebuffer->height()) s.resize(w, h);
+
+      // With --frames the window steps time exactly like a headless run, so its pixels
+      // can be compared with a golden.
+      const double now = glfwGetTime();
+      fps = 0.9 * fps + 0.1 / std::max(now - last, 1e-6);
+      if (cl.frames) st.time = cl.time + frame / 60.0;
+      else if (!st.paused) st.time += now - last;
+      last = now;
+
+      const int step = std::min(st.passStep, static_cast<int>(s.info.passes.size()) - 1);
+      s.renderFrame(st.time, {.measure = false, .captureAll = false,
+                              .captureOnly = step >= 0 ? std::optional<std::size_t>(step) : std::nullopt});
+      const Snapshot* snap = nullptr;
+      if (step >= 0)
+        for (const Snapshot& sn : s.recorder->snapshots()) snap = &sn;
+
+      Image shown;
+      if (st.view == View::Colour && !snap) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, s.framebuffer->id());
+        Display::blitFit(s.framebuffer->width(), s.framebuffer->height(), w, h, false);
+      } else {
+        const Image stencil = snap ? snap->stencil : s.framebuffer->readStencil();
+        shown = st.view == View::Colour       ? snap->colour
+                : st.view == View::StencilRamp ? stencilRamp(stencil)
+                                               : stencilBitPlanes(stencil);
+        display.show(shown, w, h);
+      }
+
+      const bool lastFrame = cl.frames && frame + 1 >= *cl.frames;
+      if (st.screenshot || lastFrame) {
+        // What the window shows, without the panel: read back from the window itself.
+        Image screen(w, h, 4);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+        glReadBuffer(GL_BACK);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, screen.pixels.data());
+        for (int y = 0; y < h / 2; ++y)
+          std::swap_ranges(screen.at(0, y), screen.at(0, y) + w * 4, screen.at(0, h - 1 - y));
+        if (st.screenshot) {
+          char name[128];
+          std::snprintf(name, sizeof name, "screenshot-%s-%03d.png", s.info.id.c_str(), st.screenshots++);
+          writePng(name, screen);
+          std::cerr << "saved " << name << "\n";
+          st.screenshot = false;
+        }
+        if (lastFrame) {
+          exitCode = finishRun(s, screen, s.framebuffer->readStencil(), {});
+          break;
+        }
+      }
+
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+      drawPanel(st, fps);
+      ImGui::Render();
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      glViewport(0, 0, w, h);
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      glfwSwapBuffers(window);
+    }
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  return exitCode;
+}
+
+}  // namespace stencil

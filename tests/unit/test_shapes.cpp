@@ -1,0 +1,334 @@
+#include "geometry/shapes.h"
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numbers>
+#include <optional>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+#include <gtest/gtest.h>
+
+#include "geometry/adjacency.h"
+#include "geometry/mesh.h"
+#include "geometry/weld.h"
+
+namespace {
+
+using stencil::Mesh;
+constexpr double pi = std::numbers::pi;
+
+// Volume of the polyhedron made by sweeping a polygonal profile (rho, y)
+// around the y axis in `slices` straight steps, as the UV shapes do.
+// Each horizontal cross-section is a regular slices-gon whose circumradius is
+// the profile's rho at that height, with area k * pi * rho^2 where
+// k = slices * sin(2 pi / slices) / (2 pi). So the volume is k times the
+// volume of revolution of the profile, which is a sum of frustums
+// pi * dy * (ra^2 + ra rb + rb^2) / 3. Signed, so a closed profile loop works.
+double sweptPolygonVolume(const std::vector<glm::dvec2>& profile, int slices) {
+    double revolved = 0.0;
+    for (std::size_t i = 0; i + 1 < profile.size(); ++i) {
+        const glm::dvec2 a = profile[i], b = profile[i + 1];
+        revolved += pi * (a.y - b.y) * (a.x * a.x + a.x * b.x + b.x * b.x) / 3.0;
+    }
+    const double k = slices * std::sin(2.0 * pi / slices) / (2.0 * pi);
+    return std::abs(k * revolved);
+}
+
+double sphereExactVolume(double r, int slices, int stacks) {
+    std::vector<glm::dvec2> profile;
+    for (int i = 0; i <= stacks; ++i) {
+        const double phi = pi * i / stacks;
+        profile.emplace_back(r * std::sin(phi), r * std::cos(phi));
+    }
+    return sweptPolygonVolume(profile, slices);
+}
+
+double torusExactVolume(double major, double minor, int majorSegments, int minorSegments) {
+    std::vector<glm::dvec2> profile;
+    for (int j = 0; j <= minorSegments; ++j) {  // closed loop: last point repeats the first
+        const double v = 2.0 * pi * j / minorSegments;
+        profile.emplace_back(major + minor * std::cos(v), minor * std::sin(v));
+    }
+    return sweptPolygonVolume(profile, majorSegments);
+}
+
+double cylinderExactVolume(double r, double h, int slices) {
+    return sweptPolygonVolume({{0, h / 2}, {r, h / 2}, {r, -h / 2}, {0, -h / 2}}, slices);
+}
+
+double coneExactVolume(double r, double h, int slices) {
+    return sweptPolygonVolume({{0, h / 2}, {r, -h / 2}, {0, -h / 2}}, slices);
+}
+
+// A point "behind" p on the inside, so p - inner(p) is the outward direction.
+using InnerPoint = std::function<glm::vec3(glm::vec3)>;
+const InnerPoint origin = [](glm::vec3) { return glm::vec3(0.0f); };
+InnerPoint torusCore(float major) {
+    // Nearest point on the tube's centre circle.
+    return [major](glm::vec3 p) { return glm::normalize(glm::vec3(p.x, 0.0f, p.z)) * major; };
+}
+InnerPoint torusFaceCore(float major, int majorSegments) {
+    // A face spans one wedge between tube centres c_i and c_i+1. It is planar
+    // and symmetric about the wedge's bisector, so its normal is perpendicular
+    // to the chord c_i c_i+1; the chord's midpoint is inside and is the
+    // reference. (The smooth core circle is not: on a 3-segment torus the
+    // chords cut far inside it.)
+    return [major, majorSegments](glm::vec3 p) {
+        const double wedge = 2.0 * pi / majorSegments;
+        double angle = std::atan2(static_cast<double>(p.z), static_cast<double>(p.x));
+        if (angle < 0.0) angle += 2.0 * pi;
+        const double bisector = (std::floor(angle / wedge) + 0.5) * wedge;
+        const double reach = major * std::cos(wedge / 2.0);
+        return glm::vec3(glm::dvec3(reach * std::cos(bisector), 0.0, reach * std::sin(bisector)));
+    };
+}
+
+struct ShapeCase {
+    std::string name;
+    std::function<Mesh()> make;
+    std::size_t vertices, triangles, weldedVertices;
+    std::size_t borderEdges;  // after welding
+    long euler;               // V - E + F after welding
+    InnerPoint inner;
+    std::optional<double> exactVolume;  // closed shapes only
+    InnerPoint faceInner = nullptr;     // for triangle centroids, if inner does not fit
+};
+
+std::ostream& operator<<(std::ostream& os, const ShapeCase& c) {
+    return os << c.name;
+}
+
+// Expected counts come from the construction (see shapes.h):
+// plane (d+1)^2 / 2d^2, border 4d, a disc so V-E+F = 1;
+// cube 24 / 12, 8 corners; sphere s(t-1)+2 / 2s(t-1); torus Mm / 2Mm, genus 1 so 0;
+// cylinder 4s+2 / 4s, 2s+2 welded; cone 3s+1 / 2s, s+2 welded.
+std::vector<ShapeCase> shapeCases() {
+    return {
+        {"Plane1", [] { return stencil::makePlane(2.0f); }, 4, 2, 4, 4, 1, [](glm::vec3 p) { return p - glm::vec3(0, 1, 0); }, {}},
+        {"Plane4", [] { return stencil::makePlane(1.5f, 4); }, 25, 32, 25, 16, 1, [](glm::vec3 p) { return p - glm::vec3(0, 1, 0); }, {}},
+        {"Cube", [] { return stencil::makeCube(0.75f); }, 24, 12, 8, 0, 2, origin, 1.5 * 1.5 * 1.5},
+        {"SphereMin", [] { return stencil::makeSphere(1.0f, 3, 2); }, 5, 6, 5, 0, 2, origin, sphereExactVolume(1.0, 3, 2)},
+        {"Sphere", [] { return stencil::makeSphere(1.25f, 12, 7); }, 74, 144, 74, 0, 2, origin, sphereExactVolume(1.25, 12, 7)},
+        {"TorusMin", [] { return stencil::makeTorus(1.0f, 0.25f, 3, 3); }, 9, 18, 9, 0, 0, torusCore(1.0f), torusExactVolume(1.0, 0.25, 3, 3), torusFaceCore(1.0f, 3)},
+        {"Torus", [] { return stencil::makeTorus(2.0f, 0.5f, 16, 8); }, 128, 256, 128, 0, 0, torusCore(2.0f), torusExactVolume(2.0, 0.5, 16, 8), torusFaceCore(2.0f, 16)},
+        {"CylinderMin", [] { return stencil::makeCylinder(1.0f, 1.0f, 3); }, 14, 12, 8, 0, 2, origin, cylinderExactVolume(1.0, 1.0, 3)},
+        {"Cylinder", [] { return stencil::makeCylinder(0.8f, 2.0f, 10); }, 42, 40, 22, 0, 2, origin, cylinderExactVolume(0.8, 2.0, 10)},
+        {"ConeMin", [] { return stencil::makeCone(1.0f, 1.0f, 3); }, 10, 6, 5, 0, 2, origin, coneExactVolume(1.0, 1.0, 3)},
+        {"Cone", [] { return stencil::makeCone(1.0f, 1.5f, 9); }, 28, 18, 11, 0, 2, origin, coneExactVolume(1.0, 1.5, 9)},
+    };
+}
+
+class ShapeTest : public testing::TestWithParam<ShapeCase> {};
+
+TEST_P(ShapeTest, CountsFollowFromParameters) {
+    const ShapeCase& c = GetParam();
+    const Mesh m = c.make();
+    EXPECT_NO_THROW(stencil::validateMesh(m));
+    EXPECT_EQ(m.positions.size(), c.vertices);
+    EXPECT_EQ(m.normals.size(), m.positions.size());
+    EXPECT_EQ(m.triangleCount(), c.triangles);
+    EXPECT_TRUE(stencil::allFinite(m));
+}
+
+TEST_P(ShapeTest, WeldedTopology) {
+    const ShapeCase& c = GetParam();
+    const Mesh m = c.make();
+    const Mesh welded = stencil::weldByPosition(m).mesh;
+    EXPECT_EQ(welded.positions.size(), c.weldedVertices);
+    EXPECT_EQ(welded.triangleCount(), c.triangles);
+
+    const stencil::EdgeAdjacency adj = stencil::buildEdgeAdjacency(welded.indices, welded.positions.size());
+    EXPECT_EQ(adj.report.borderEdges, c.borderEdges);
+    EXPECT_EQ(adj.report.nonManifoldEdges, 0u);
+    EXPECT_EQ(adj.report.inconsistentEdges, 0u);
+    EXPECT_EQ(adj.report.degenerateTriangles, 0u);
+    EXPECT_EQ(adj.report.closedManifold(), c.borderEdges == 0);
+    const long eulerCharacteristic = static_cast<long>(welded.positions.size()) - static_cast<long>(adj.edges.size()) +
+                                     static_cast<long>(welded.triangleCount());
+    EXPECT_EQ(eulerCharacteristic, c.euler);
+    // On a closed mesh every triangle has three edges, each shared by two: E = 3F/2.
+    if (c.borderEdges == 0) {
+        EXPECT_EQ(2 * adj.edges.size(), 3 * welded.triangleCount());
+    }
+}
+
+TEST_P(ShapeTest, NoZeroAreaTriangles) {
+    // Stronger than the index check: catches collapsed pole or apex triangles.
+    const Mesh m = stencil::weldByPosition(GetParam().make()).mesh;
+    for (std::size_t t = 0; t < m.triangleCount(); ++t) {
+        const glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+                        c = m.positions[m.indices[3 * t + 2]];
+        EXPECT_GT(glm::length(glm::cross(b - a, c - a)), 1e-6f) << "triangle " << t;
+    }
+}
+
+TEST_P(ShapeTest, NormalsAreUnitAndOutward) {
+    const ShapeCase& c = GetParam();
+    const Mesh m = c.make();
+    for (std::size_t i = 0; i < m.positions.size(); ++i) {
+        EXPECT_NEAR(glm::length(m.normals[i]), 1.0f, 1e-5f) << "vertex " << i;
+        EXPECT_GT(glm::dot(m.normals[i], m.positions[i] - c.inner(m.positions[i])), 0.0f) << "vertex " << i;
+    }
+}
+
+TEST_P(ShapeTest, FacesWindCounterClockwiseFromOutside) {
+    const ShapeCase& c = GetParam();
+    const Mesh m = c.make();
+    const InnerPoint& inner = c.faceInner ? c.faceInner : c.inner;
+    for (std::size_t t = 0; t < m.triangleCount(); ++t) {
+        const glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+                        d = m.positions[m.indices[3 * t + 2]];
+        const glm::vec3 geometric = glm::cross(b - a, d - a);
+        const glm::vec3 centroid = (a + b + d) / 3.0f;
+        EXPECT_GT(glm::dot(geometric, centroid - inner(centroid)), 0.0f) << "triangle " << t;
+        // Shading normals must agree with the winding, or lighting and culling disagree.
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_GT(glm::dot(geometric, m.normals[m.indices[3 * t + k]]), 0.0f) << "triangle " << t;
+        }
+    }
+}
+
+TEST_P(ShapeTest, VolumeMatchesItsPolyhedron) {
+    const ShapeCase& c = GetParam();
+    if (!c.exactVolume) GTEST_SKIP() << "open shape";
+    const double volume = stencil::signedVolume(c.make());
+    EXPECT_GT(volume, 0.0);
+    EXPECT_NEAR(volume, *c.exactVolume, *c.exactVolume * 1e-5);
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, ShapeTest, testing::ValuesIn(shapeCases()),
+                         [](const testing::TestParamInfo<ShapeCase>& param) { return param.param.name; });
+
+// Refining the tessellation must approach the analytic volume from below
+// (inscribed), with the error shrinking at every step.
+void expectConverges(const std::function<Mesh(int)>& make, double analytic) {
+    double previousError = analytic;
+    for (int n : {8, 16, 32, 64}) {
+        const double volume = stencil::signedVolume(make(n));
+        const double error = analytic - volume;
+        EXPECT_GT(volume, 0.0) << n << " segments";
+        EXPECT_GT(error, 0.0) << n << " segments";
+        EXPECT_LT(error, previousError) << n << " segments";
+        previousError = error;
+        if (n == 64) {
+            EXPECT_LT(error / analytic, 0.01);
+        }
+    }
+}
+
+TEST(ShapeVolume, SphereConverges) {
+    expectConverges([](int n) { return stencil::makeSphere(1.5f, n, n / 2); }, 4.0 / 3.0 * pi * 1.5 * 1.5 * 1.5);
+}
+
+TEST(ShapeVolume, TorusConverges) {
+    // Pappus: tube area pi r^2 times path length 2 pi R.
+    expectConverges([](int n) { return stencil::makeTorus(2.0f, 0.5f, n, n); }, 2.0 * pi * pi * 2.0 * 0.5 * 0.5);
+}
+
+TEST(ShapeVolume, CylinderConverges) {
+    expectConverges([](int n) { return stencil::makeCylinder(0.5f, 3.0f, n); }, pi * 0.5 * 0.5 * 3.0);
+}
+
+TEST(ShapeVolume, ConeConverges) {
+    expectConverges([](int n) { return stencil::makeCone(1.0f, 2.0f, n); }, pi * 1.0 * 1.0 * 2.0 / 3.0);
+}
+
+// Vertices sit on the analytic surfaces.
+TEST(ShapeSurface, SphereVerticesOnSphere) {
+    const Mesh m = stencil::makeSphere(2.5f, 10, 5);
+    for (const glm::vec3& p : m.positions) EXPECT_NEAR(glm::length(p), 2.5f, 1e-5f);
+    EXPECT_EQ(m.positions.front(), glm::vec3(0, 2.5f, 0));  // poles on the y axis
+    EXPECT_EQ(m.positions.back(), glm::vec3(0, -2.5f, 0));
+}
+
+TEST(ShapeSurface, TorusVerticesOnTorus) {
+    // (sqrt(x^2 + z^2) - R)^2 + y^2 = r^2
+    const Mesh m = stencil::makeTorus(3.0f, 1.0f, 12, 6);
+    for (const glm::vec3& p : m.positions) {
+        const float rho = glm::length(glm::vec2(p.x, p.z));
+        EXPECT_NEAR(std::hypot(rho - 3.0f, p.y), 1.0f, 1e-5f);
+    }
+}
+
+TEST(ShapeSurface, CylinderVerticesOnRimsOrAxis) {
+    const Mesh m = stencil::makeCylinder(0.5f, 4.0f, 7);
+    for (const glm::vec3& p : m.positions) {
+        EXPECT_EQ(std::abs(p.y), 2.0f);
+        const float rho = glm::length(glm::vec2(p.x, p.z));
+        EXPECT_TRUE(rho < 1e-6f || std::abs(rho - 0.5f) < 1e-6f) << rho;
+    }
+}
+
+TEST(ShapeSurface, ConeBaseAndApex) {
+    const Mesh m = stencil::makeCone(0.5f, 4.0f, 7);
+    for (const glm::vec3& p : m.positions) {
+        const float rho = glm::length(glm::vec2(p.x, p.z));
+        if (p.y == 2.0f) {
+            EXPECT_LT(rho, 1e-6f);  // apex
+        } else {
+            EXPECT_EQ(p.y, -2.0f);
+            EXPECT_TRUE(rho < 1e-6f || std::abs(rho - 0.5f) < 1e-6f) << rho;
+        }
+    }
+}
+
+TEST(ShapeSurface, PlaneSpansItsHalfSize) {
+    const Mesh m = stencil::makePlane(1.5f, 3);
+    for (const glm::vec3& p : m.positions) {
+        EXPECT_EQ(p.y, 0.0f);
+        EXPECT_LE(std::abs(p.x), 1.5f);
+        EXPECT_LE(std::abs(p.z), 1.5f);
+    }
+    for (const glm::vec3& n : m.normals) EXPECT_EQ(n, glm::vec3(0, 1, 0));
+    // The grid corners are exactly +-halfSize.
+    EXPECT_EQ(m.positions.front(), glm::vec3(-1.5f, 0, -1.5f));
+    EXPECT_EQ(m.positions.back(), glm::vec3(1.5f, 0, 1.5f));
+}
+
+TEST(ShapeParameters, RejectBadSizes) {
+    const float nan = std::nanf("");
+    const float inf = std::numeric_limits<float>::infinity();
+    for (const float bad : {0.0f, -1.0f, nan, inf}) {
+        EXPECT_THROW(stencil::makePlane(bad), std::invalid_argument);
+        EXPECT_THROW(stencil::makeCube(bad), std::invalid_argument);
+        EXPECT_THROW(stencil::makeSphere(bad, 8, 4), std::invalid_argument);
+        EXPECT_THROW(stencil::makeTorus(bad, 0.5f, 8, 8), std::invalid_argument);
+        EXPECT_THROW(stencil::makeTorus(2.0f, bad, 8, 8), std::invalid_argument);
+        EXPECT_THROW(stencil::makeCylinder(bad, 1.0f, 8), std::invalid_argument);
+        EXPECT_THROW(stencil::makeCylinder(1.0f, bad, 8), std::invalid_argument);
+        EXPECT_THROW(stencil::makeCone(bad, 1.0f, 8), std::invalid_argument);
+        EXPECT_THROW(stencil::makeCone(1.0f, bad, 8), std::invalid_argument);
+    }
+    // A tube as thick as the ring is wide would pass through the axis.
+    EXPECT_THROW(stencil::makeTorus(1.0f, 1.0f, 8, 8), std::invalid_argument);
+    EXPECT_THROW(stencil::makeTorus(1.0f, 2.0f, 8, 8), std::invalid_argument);
+}
+
+TEST(ShapeParameters, RejectTooFewSegments) {
+    EXPECT_THROW(stencil::makePlane(1.0f, 0), std::invalid_argument);
+    EXPECT_THROW(stencil::makeSphere(1.0f, 2, 4), std::invalid_argument);
+    EXPECT_THROW(stencil::makeSphere(1.0f, 8, 1), std::invalid_argument);
+    EXPECT_THROW(stencil::makeTorus(2.0f, 0.5f, 2, 8), std::invalid_argument);
+    EXPECT_THROW(stencil::makeTorus(2.0f, 0.5f, 8, 2), std::invalid_argument);
+    EXPECT_THROW(stencil::makeCylinder(1.0f, 1.0f, 2), std::invalid_argument);
+    EXPECT_THROW(stencil::makeCone(1.0f, 1.0f, -3), std::invalid_argument);
+}
+
+TEST(ShapeParameters, MessageNamesTheParameter) {
+    try {
+        stencil::makeSphere(1.0f, 8, 1);
+        FAIL() << "expected std::invalid_argument";
+    } catch (const std::invalid_argument& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("makeSphere"), std::string::npos) << what;
+        EXPECT_NE(what.find("stacks"), std::string::npos) << what;
+    }
+}
+
+}  // namespace
