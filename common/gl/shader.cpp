@@ -66,15 +66,20 @@ std::string formatCompileLog(const std::string& file, const std::string& log) {
   static const std::regex mesa(R"(^\s*\d+:(\d+)\(\d+\):\s*(.*)$)");
   static const std::regex nvidia(R"(^\s*\d+\((\d+)\)\s*:\s*(.*)$)");
   std::istringstream lines(log);
-  std::string line, out;
+  std::string line, first;
+  int count = 0;
   while (std::getline(lines, line)) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    if (count++ > 0) continue;
     std::smatch m;
     if (std::regex_match(line, m, mesa) || std::regex_match(line, m, nvidia))
-      out += (out.empty() ? "" : "\n") + file + ":" + m[1].str() + ": " + m[2].str();
-    else if (!line.empty())
-      out += (out.empty() ? "" : "\n") + file + ": " + line;
+      first = file + ":" + m[1].str() + ": " + m[2].str();
+    else
+      first = file + ": " + line;
   }
-  return out.empty() ? file + ": compile failed with an empty log" : out;
+  // The first message is the cause; the rest usually follow from it.
+  if (count == 0) return file + ": compile failed with an empty log";
+  return count == 1 ? first : first + " (and " + std::to_string(count - 1) + " more)";
 }
 
 Program::Program(const std::string& vertexFile, const std::string& fragmentFile) {

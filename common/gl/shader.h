@@ -42,8 +42,8 @@ class Program {
   GLuint id_ = 0;
 };
 
-// Turns a driver's info log into "file:line: message" lines. Drivers write either
-// "0:12(5): error: ..." (Mesa) or "0(12) : error ..." (NVIDIA).
+// Turns a driver's info log into one line, "file:line: message (and N more)", from its
+// first message. Drivers write "0:12(5): error: ..." (Mesa) or "0(12) : error ..." (NVIDIA).
 std::string formatCompileLog(const std::string& file, const std::string& log);
 
 }  // namespace stencil

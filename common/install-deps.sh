@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Installs the Debian/Ubuntu packages the project builds and tests with, if any are
+# missing: with apt-get as root, with sudo if it needs no password, otherwise it prints
+# the exact command and stops.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config   # toolchain
+  python3-glad                       # generates the GL loader at configure time
+  libglm-dev libstb-dev              # maths, PNG files
+  libegl-dev libegl-mesa0 libgl1-mesa-dri  # EGL headless contexts (llvmpipe without a GPU)
+  libglfw3-dev libimgui-dev          # the window and its panel
+  libgtest-dev                       # unit tests
+  xvfb xauth                         # the window test runs under a virtual display
+)
+optional=(libosmesa6-dev)            # newer Mesa releases dropped OSMesa; EGL then serves
+
+installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
+
+missing=()
+for p in "${packages[@]}"; do installed "$p" || missing+=("$p"); done
+missing_optional=()
+for p in "${optional[@]}"; do installed "$p" || missing_optional+=("$p"); done
+[ ${#missing[@]} -eq 0 ] && [ ${#missing_optional[@]} -eq 0 ] && exit 0
+
+if [ "$(id -u)" -eq 0 ]; then
+  sudo=()
+elif command -v sudo >/dev/null && sudo -n true 2>/dev/null; then
+  sudo=(sudo)
+else
+  echo "Missing packages. Install them with:" >&2
+  echo "  sudo apt-get update && sudo apt-get install -y ${missing[*]} ${missing_optional[*]}" >&2
+  exit 1
+fi
+
+echo "Installing: ${missing[*]} ${missing_optional[*]}" >&2
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -qq
+# Optional packages only where this release still has them.
+for p in "${missing_optional[@]}"; do
+  if apt-cache show "$p" >/dev/null 2>&1; then missing+=("$p"); else echo "($p is not in this release: skipped)" >&2; fi
+done
+"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
