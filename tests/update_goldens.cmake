@@ -1,14 +1,7 @@
 # Rewrites the goldens of one lesson: every variant, default headless backend.
-execute_process(COMMAND ${EXE} --list-variants OUTPUT_VARIABLE listing RESULT_VARIABLE rc)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "${EXE} --list-variants failed")
-endif()
-string(REPLACE "\n" ";" lines "${listing}")
-foreach(line IN LISTS lines)
-  if(line STREQUAL "")
-    continue()
-  endif()
-  string(REGEX REPLACE "\t.*" "" variant "${line}")
+include(${CMAKE_CURRENT_LIST_DIR}/variants.cmake)
+lesson_variants(${EXE} variants)
+foreach(variant IN LISTS variants)
   execute_process(COMMAND ${EXE} --headless --size ${SIZE} --time ${TIME} --variant ${variant}
                           --golden ${GOLDEN_DIR} --update-golden --quiet RESULT_VARIABLE rc)
   if(NOT rc EQUAL 0)

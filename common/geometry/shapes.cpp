@@ -274,7 +274,8 @@ Mesh makeCone(float radius, float height, int slices) {
     }
     const std::uint32_t apexes = u32(s);
     for (int j = 0; j < slices; ++j) {
-        // Mid-slice direction: the apex copy of a slice uses its face normal.
+        // The apex has no single normal; each slice's copy takes the smooth
+        // cone's normal at the middle of the slice.
         addVertex(mesh, apex, slantNormal(circlePoint(j, slices, 0.5)));
     }
     const std::uint32_t centre = u32(2 * s), ring = centre + 1;

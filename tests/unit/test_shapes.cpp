@@ -292,6 +292,102 @@ TEST(ShapeSurface, PlaneSpansItsHalfSize) {
     EXPECT_EQ(m.positions.back(), glm::vec3(1.5f, 0, 1.5f));
 }
 
+// Normals match the analytic surface, not just "roughly outward".
+void expectVecNear(glm::vec3 actual, glm::vec3 expected, float tolerance, std::size_t vertex) {
+    EXPECT_LT(glm::distance(actual, expected), tolerance)
+        << "vertex " << vertex << ": (" << actual.x << ", " << actual.y << ", " << actual.z << ") vs (" << expected.x
+        << ", " << expected.y << ", " << expected.z << ")";
+}
+
+TEST(ShapeNormals, SphereNormalIsPositionOverRadius) {
+    const Mesh m = stencil::makeSphere(2.0f, 11, 6);
+    for (std::size_t i = 0; i < m.positions.size(); ++i) expectVecNear(m.normals[i], m.positions[i] / 2.0f, 1e-6f, i);
+}
+
+TEST(ShapeNormals, TorusNormalPointsAwayFromTubeCentre) {
+    const Mesh m = stencil::makeTorus(2.0f, 0.5f, 9, 7);
+    const InnerPoint core = torusCore(2.0f);
+    for (std::size_t i = 0; i < m.positions.size(); ++i) {
+        expectVecNear(m.normals[i], (m.positions[i] - core(m.positions[i])) / 0.5f, 1e-5f, i);
+    }
+}
+
+TEST(ShapeNormals, FlatFacesUseTheirPlaneNormal) {
+    // Cube faces, the caps and the plane: a triangle whose three vertices share
+    // one normal is flat-shaded, and that normal must be its plane's.
+    std::size_t flat = 0;
+    for (const Mesh& m : {stencil::makePlane(1.0f, 2), stencil::makeCube(1.0f), stencil::makeCylinder(1.0f, 2.0f, 6),
+                          stencil::makeCone(1.0f, 2.0f, 6)}) {
+        for (std::size_t t = 0; t < m.triangleCount(); ++t) {
+            const std::uint32_t* tri = &m.indices[3 * t];
+            if (m.normals[tri[0]] != m.normals[tri[1]] || m.normals[tri[0]] != m.normals[tri[2]]) continue;
+            ++flat;
+            const glm::vec3 geometric =
+                glm::normalize(glm::cross(m.positions[tri[1]] - m.positions[tri[0]], m.positions[tri[2]] - m.positions[tri[0]]));
+            expectVecNear(m.normals[tri[0]], geometric, 1e-6f, tri[0]);
+        }
+    }
+    // 2*2*2 plane + 12 cube + 2*6 cylinder caps + 6 cone base triangles.
+    EXPECT_EQ(flat, 8u + 12u + 12u + 6u);
+}
+
+TEST(ShapeNormals, CylinderSideIsRadialCapsAreVertical) {
+    const int slices = 7;
+    const Mesh m = stencil::makeCylinder(0.5f, 3.0f, slices);
+    std::size_t radial = 0, capped = 0;
+    for (std::size_t i = 0; i < m.positions.size(); ++i) {
+        const glm::vec3 p = m.positions[i], n = m.normals[i];
+        if (n == glm::vec3(0.0f, p.y > 0.0f ? 1.0f : -1.0f, 0.0f)) {
+            ++capped;
+        } else {
+            ++radial;
+            expectVecNear(n, glm::normalize(glm::vec3(p.x, 0.0f, p.z)), 1e-6f, i);
+        }
+    }
+    EXPECT_EQ(radial, 2u * slices);      // one per rim vertex, top and bottom
+    EXPECT_EQ(capped, 2u * slices + 2);  // both rims again, plus the two centres
+}
+
+TEST(ShapeNormals, ConeSideFollowsTheSlant) {
+    // The side's profile (r, -h/2) -> (0, h/2) has outward normal (h, r) in
+    // (radial, y) at every angle. Base rim copies carry it at their own angle.
+    // Apex copies belong to one side triangle each and carry it at the middle
+    // angle of that triangle's base edge.
+    const float r = 1.0f, h = 2.0f;
+    const int slices = 8;
+    const Mesh m = stencil::makeCone(r, h, slices);
+    auto slant = [&](glm::vec3 towards) {
+        const glm::vec3 out = glm::normalize(glm::vec3(towards.x, 0.0f, towards.z));
+        return glm::normalize(glm::vec3(h * out.x, r, h * out.z));
+    };
+    std::vector<int> uses(m.positions.size(), 0);
+    for (std::uint32_t index : m.indices) ++uses[index];
+    std::size_t apexes = 0, slanted = 0, base = 0;
+    for (std::size_t t = 0; t < m.triangleCount(); ++t) {
+        const std::uint32_t* tri = &m.indices[3 * t];
+        for (int k = 0; k < 3; ++k) {
+            if (m.positions[tri[k]].y != h / 2.0f) continue;
+            ++apexes;
+            EXPECT_EQ(uses[tri[k]], 1);
+            const glm::vec3 baseMid = m.positions[tri[(k + 1) % 3]] + m.positions[tri[(k + 2) % 3]];
+            expectVecNear(m.normals[tri[k]], slant(baseMid), 1e-6f, tri[k]);
+        }
+    }
+    for (std::size_t i = 0; i < m.positions.size(); ++i) {
+        const glm::vec3 p = m.positions[i], n = m.normals[i];
+        if (p.y == h / 2.0f) continue;
+        if (n == glm::vec3(0.0f, -1.0f, 0.0f)) {
+            ++base;
+        } else {
+            ++slanted;
+            expectVecNear(n, slant(p), 1e-6f, i);
+        }
+    }
+    EXPECT_EQ(apexes, static_cast<std::size_t>(slices));
+    EXPECT_EQ(slanted, static_cast<std::size_t>(slices));
+    EXPECT_EQ(base, static_cast<std::size_t>(slices) + 1);
+}
+
 TEST(ShapeParameters, RejectBadSizes) {
     const float nan = std::nanf("");
     const float inf = std::numeric_limits<float>::infinity();
