@@ -49,7 +49,7 @@ std::unique_ptr<Context> createOsmesaContext(int, int) { return std::make_unique
 
 namespace stencil {
 std::unique_ptr<Context> createOsmesaContext(int, int) {
-  throw NoContextError("this build has no OSMesa backend (libosmesa6-dev was not found); use --backend egl");
+  throw UsageError("this build has no OSMesa backend (libosmesa6-dev was not found); use --backend egl");
 }
 }  // namespace stencil
 

@@ -104,23 +104,108 @@ std::ostream& operator<<(std::ostream& os, const ShapeCase& c) {
     return os << c.name;
 }
 
-// Expected counts come from the construction (see shapes.h):
-// plane (d+1)^2 / 2d^2, border 4d, a disc so V-E+F = 1;
-// cube 24 / 12, 8 corners; sphere s(t-1)+2 / 2s(t-1); torus Mm / 2Mm, genus 1 so 0;
-// cylinder 4s+2 / 4s, 2s+2 welded; cone 3s+1 / 2s, s+2 welded.
+// Expected counts follow from how each shape is built (see shapes.h).
+
+ShapeCase planeCase(std::string name, float halfSize, int divisions) {
+    // An (n+1) x (n+1) grid of n^2 quads; a disc, so V - E + F = 1.
+    const std::size_t n = divisions, row = n + 1;
+    return {.name = name,
+            .make = [=] { return stencil::makePlane(halfSize, divisions); },
+            .vertices = row * row,
+            .triangles = 2 * n * n,
+            .weldedVertices = row * row,
+            .borderEdges = 4 * n,
+            .euler = 1,
+            .inner = belowPlane,
+            .exactVolume = 0.0};
+}
+
+ShapeCase cubeCase(std::string name, float h) {
+    // 6 faces of 4 vertices and 2 triangles; 8 corners once welded.
+    return {.name = name,
+            .make = [=] { return stencil::makeCube(h); },
+            .vertices = 6 * 4,
+            .triangles = 6 * 2,
+            .weldedVertices = 8,
+            .borderEdges = 0,
+            .euler = 2,
+            .inner = origin,
+            .exactVolume = std::pow(2.0 * h, 3.0)};
+}
+
+ShapeCase sphereCase(std::string name, float r, int slices, int stacks) {
+    // stacks-1 rings of `slices` plus 2 poles; 2 fans of `slices` triangles
+    // and stacks-2 bands of 2*slices.
+    const std::size_t s = slices, rings = stacks - 1;
+    return {.name = name,
+            .make = [=] { return stencil::makeSphere(r, slices, stacks); },
+            .vertices = s * rings + 2,
+            .triangles = 2 * s + 2 * s * (rings - 1),
+            .weldedVertices = s * rings + 2,
+            .borderEdges = 0,
+            .euler = 2,
+            .inner = origin,
+            .exactVolume = sphereExactVolume(r, slices, stacks)};
+}
+
+ShapeCase torusCase(std::string name, float major, float minor, int majorSegments, int minorSegments) {
+    // A grid wrapped both ways: one vertex and two triangles per cell; genus 1, so V - E + F = 0.
+    const std::size_t cells = static_cast<std::size_t>(majorSegments) * minorSegments;
+    return {.name = name,
+            .make = [=] { return stencil::makeTorus(major, minor, majorSegments, minorSegments); },
+            .vertices = cells,
+            .triangles = 2 * cells,
+            .weldedVertices = cells,
+            .borderEdges = 0,
+            .euler = 0,
+            .inner = torusCore(major),
+            .exactVolume = torusExactVolume(major, minor, majorSegments, minorSegments),
+            .faceInner = torusFaceCore(major, majorSegments)};
+}
+
+ShapeCase cylinderCase(std::string name, float r, float h, int slices) {
+    // Side: 2 rims of s, 2 triangles per quad. Each cap: a centre and its own
+    // rim of s, a fan of s. Welded: 2 rims + 2 centres.
+    const std::size_t s = slices;
+    return {.name = name,
+            .make = [=] { return stencil::makeCylinder(r, h, slices); },
+            .vertices = 2 * s + 2 * (s + 1),
+            .triangles = 2 * s + 2 * s,
+            .weldedVertices = 2 * s + 2,
+            .borderEdges = 0,
+            .euler = 2,
+            .inner = origin,
+            .exactVolume = cylinderExactVolume(r, h, slices)};
+}
+
+ShapeCase coneCase(std::string name, float r, float h, int slices) {
+    // Side: a rim of s and s apex copies, one triangle per slice. Base: a
+    // centre, its own rim of s, a fan of s. Welded: rim + apex + centre.
+    const std::size_t s = slices;
+    return {.name = name,
+            .make = [=] { return stencil::makeCone(r, h, slices); },
+            .vertices = 2 * s + (s + 1),
+            .triangles = s + s,
+            .weldedVertices = s + 2,
+            .borderEdges = 0,
+            .euler = 2,
+            .inner = origin,
+            .exactVolume = coneExactVolume(r, h, slices)};
+}
+
 std::vector<ShapeCase> shapeCases() {
     return {
-        {"Plane1", [] { return stencil::makePlane(2.0f); }, 4, 2, 4, 4, 1, belowPlane, 0.0},
-        {"Plane4", [] { return stencil::makePlane(1.5f, 4); }, 25, 32, 25, 16, 1, belowPlane, 0.0},
-        {"Cube", [] { return stencil::makeCube(0.75f); }, 24, 12, 8, 0, 2, origin, 1.5 * 1.5 * 1.5},
-        {"SphereMin", [] { return stencil::makeSphere(1.0f, 3, 2); }, 5, 6, 5, 0, 2, origin, sphereExactVolume(1.0, 3, 2)},
-        {"Sphere", [] { return stencil::makeSphere(1.25f, 12, 7); }, 74, 144, 74, 0, 2, origin, sphereExactVolume(1.25, 12, 7)},
-        {"TorusMin", [] { return stencil::makeTorus(1.0f, 0.25f, 3, 3); }, 9, 18, 9, 0, 0, torusCore(1.0f), torusExactVolume(1.0, 0.25, 3, 3), torusFaceCore(1.0f, 3)},
-        {"Torus", [] { return stencil::makeTorus(2.0f, 0.5f, 16, 8); }, 128, 256, 128, 0, 0, torusCore(2.0f), torusExactVolume(2.0, 0.5, 16, 8), torusFaceCore(2.0f, 16)},
-        {"CylinderMin", [] { return stencil::makeCylinder(1.0f, 1.0f, 3); }, 14, 12, 8, 0, 2, origin, cylinderExactVolume(1.0, 1.0, 3)},
-        {"Cylinder", [] { return stencil::makeCylinder(0.8f, 2.0f, 10); }, 42, 40, 22, 0, 2, origin, cylinderExactVolume(0.8, 2.0, 10)},
-        {"ConeMin", [] { return stencil::makeCone(1.0f, 1.0f, 3); }, 10, 6, 5, 0, 2, origin, coneExactVolume(1.0, 1.0, 3)},
-        {"Cone", [] { return stencil::makeCone(1.0f, 1.5f, 9); }, 28, 18, 11, 0, 2, origin, coneExactVolume(1.0, 1.5, 9)},
+        planeCase("Plane1", 2.0f, 1),
+        planeCase("Plane4", 1.5f, 4),
+        cubeCase("Cube", 0.75f),
+        sphereCase("SphereMin", 1.0f, 3, 2),
+        sphereCase("Sphere", 1.25f, 12, 7),
+        torusCase("TorusMin", 1.0f, 0.25f, 3, 3),
+        torusCase("Torus", 2.0f, 0.5f, 16, 8),
+        cylinderCase("CylinderMin", 1.0f, 1.0f, 3),
+        cylinderCase("Cylinder", 0.8f, 2.0f, 10),
+        coneCase("ConeMin", 1.0f, 1.0f, 3),
+        coneCase("Cone", 1.0f, 1.5f, 9),
     };
 }
 
