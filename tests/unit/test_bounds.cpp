@@ -79,8 +79,8 @@ TEST(Aabb, TransformedBoundsOfRotatedCube) {
 TEST(Aabb, TransformedBoundsMatchTransformedBoxMesh) {
     // For a box the 8 corners are the mesh's own vertices, so both routes agree.
     const stencil::Mesh cube = stencil::makeCube(0.7f);
-    const glm::mat4 m = glm::scale(
-        glm::rotate(glm::translate(glm::mat4(1.0f), {3, -1, 2}), 0.4f, glm::normalize(glm::vec3(1, 1, 0))), {1, 2, 0.5f});
+    const glm::mat4 moved = glm::translate(glm::mat4(1.0f), {3, -1, 2});
+    const glm::mat4 m = glm::scale(glm::rotate(moved, 0.4f, glm::normalize(glm::vec3(1, 1, 0))), {1, 2, 0.5f});
     const Aabb viaCorners = stencil::transformedBounds(stencil::boundsOf(cube.positions), m);
     const Aabb viaMesh = stencil::boundsOf(stencil::transformed(cube, m).positions);
     expectVecNear(viaCorners.min, viaMesh.min, 1e-5f);
@@ -110,9 +110,9 @@ void expectContainsAll(const std::vector<glm::vec3>& points) {
 }
 
 TEST(BoundingSphere, ContainsEveryVertexOfEveryShape) {
-    for (const stencil::Mesh& m :
-         {stencil::makePlane(2.0f, 3), stencil::makeCube(0.5f), stencil::makeSphere(1.0f, 13, 7),
-          stencil::makeTorus(2.0f, 0.3f, 17, 9), stencil::makeCylinder(0.3f, 5.0f, 11), stencil::makeCone(2.0f, 0.5f, 7)}) {
+    for (const stencil::Mesh& m : {stencil::makePlane(2.0f, 3), stencil::makeCube(0.5f),
+                                   stencil::makeSphere(1.0f, 13, 7), stencil::makeTorus(2.0f, 0.3f, 17, 9),
+                                   stencil::makeCylinder(0.3f, 5.0f, 11), stencil::makeCone(2.0f, 0.5f, 7)}) {
         expectContainsAll(m.positions);
     }
     // Off-centre and rotated copies, so the centre is not trivially the origin.

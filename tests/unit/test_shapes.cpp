@@ -24,8 +24,10 @@ constexpr double pi = std::numbers::pi;
 
 // Volume of the polyhedron made by sweeping a polygonal profile (rho, y)
 // around the y axis in `slices` straight steps, as the UV shapes do.
-// Each horizontal cross-section is a regular slices-gon whose circumradius is
-// the profile's rho at that height, with area k * pi * rho^2 where
+// The side quads are planar trapezoids between neighbouring copies of the
+// profile, so each horizontal cross-section is a regular slices-gon (or, for
+// the torus, one inside another) whose circumradius is the profile's rho at
+// that height, with area k * pi * rho^2 where
 // k = slices * sin(2 pi / slices) / (2 pi). So the volume is k times the
 // volume of revolution of the profile, which is a sum of frustums
 // pi * dy * (ra^2 + ra rb + rb^2) / 3. Signed, so a closed profile loop works.
@@ -407,8 +409,8 @@ TEST(ShapeNormals, FlatFacesUseTheirPlaneNormal) {
             const std::uint32_t* tri = &m.indices[3 * t];
             if (m.normals[tri[0]] != m.normals[tri[1]] || m.normals[tri[0]] != m.normals[tri[2]]) continue;
             ++flat;
-            const glm::vec3 geometric =
-                glm::normalize(glm::cross(m.positions[tri[1]] - m.positions[tri[0]], m.positions[tri[2]] - m.positions[tri[0]]));
+            const glm::vec3 a = m.positions[tri[0]], b = m.positions[tri[1]], c = m.positions[tri[2]];
+            const glm::vec3 geometric = glm::normalize(glm::cross(b - a, c - a));
             expectVecNear(m.normals[tri[0]], geometric, 1e-6f, tri[0]);
         }
     }
