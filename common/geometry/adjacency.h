@@ -17,21 +17,21 @@ namespace stencil {
 // inconsistent or non-manifold in EdgeAdjacency, face1 may walk v0 -> v1 too
 // (see there). So face1 == -1 exactly when the edge is a border edge.
 struct Edge {
-    std::uint32_t v0, v1;
-    std::int32_t face0;
-    std::int32_t face1;
+  std::uint32_t v0, v1;
+  std::int32_t face0;
+  std::int32_t face1;
 };
 
 struct AdjacencyReport {
-    std::size_t borderEdges = 0;          // exactly one face
-    std::size_t nonManifoldEdges = 0;     // three or more faces
-    std::size_t inconsistentEdges = 0;    // two faces walking it the same way
-    std::size_t degenerateTriangles = 0;  // two equal indices; skipped
+  std::size_t borderEdges = 0;          // exactly one face
+  std::size_t nonManifoldEdges = 0;     // three or more faces
+  std::size_t inconsistentEdges = 0;    // two faces walking it the same way
+  std::size_t degenerateTriangles = 0;  // two equal indices; skipped
 
-    // Every edge has exactly two faces walking it in opposite directions:
-    // closed, two-manifold and consistently oriented, which is what shadow
-    // volumes need. Degenerate triangles are skipped and do not break this.
-    bool closedManifold() const;
+  // Every edge has exactly two faces walking it in opposite directions:
+  // closed, two-manifold and consistently oriented, which is what shadow
+  // volumes need. Degenerate triangles are skipped and do not break this.
+  bool closedManifold() const;
 };
 
 // Categories are disjoint: a non-manifold edge is not also counted as
@@ -42,12 +42,12 @@ struct AdjacencyReport {
 // seen); the extra faces are not stored. Such a mesh is unfit for shadow
 // volumes anyway: check report.closedManifold() before using silhouettes.
 struct EdgeAdjacency {
-    std::vector<Edge> edges;  // in order of first appearance in the index list
-    AdjacencyReport report;
-    std::vector<std::uint32_t> borderEdgeIndices;         // into edges
-    std::vector<std::uint32_t> nonManifoldEdgeIndices;    // into edges
-    std::vector<std::uint32_t> inconsistentEdgeIndices;   // into edges
-    std::vector<std::uint32_t> degenerateTriangleIndices; // triangle numbers
+  std::vector<Edge> edges;  // in order of first appearance in the index list
+  AdjacencyReport report;
+  std::vector<std::uint32_t> borderEdgeIndices;          // into edges
+  std::vector<std::uint32_t> nonManifoldEdgeIndices;     // into edges
+  std::vector<std::uint32_t> inconsistentEdgeIndices;    // into edges
+  std::vector<std::uint32_t> degenerateTriangleIndices;  // triangle numbers
 };
 
 // Expected O(n): a hash map keyed by the ordered vertex pair. The check is

@@ -3,23 +3,22 @@
 // Bounding volumes, e.g. to place a light outside a scene or to fit a shadow
 // volume's extrusion distance. Points are expected to be finite.
 
-#include <limits>
-#include <vector>
-
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <limits>
+#include <vector>
 
 namespace stencil {
 
 struct Aabb {
-    // Starts inverted (min > max) so the first extend() sets both corners.
-    glm::vec3 min{std::numeric_limits<float>::infinity()};
-    glm::vec3 max{-std::numeric_limits<float>::infinity()};
+  // Starts inverted (min > max) so the first extend() sets both corners.
+  glm::vec3 min{std::numeric_limits<float>::infinity()};
+  glm::vec3 max{-std::numeric_limits<float>::infinity()};
 
-    bool empty() const;         // true until something was added
-    glm::vec3 center() const;   // (0,0,0) when empty
-    glm::vec3 extent() const;   // full size, max - min; (0,0,0) when empty
-    void extend(glm::vec3 point);
+  bool empty() const;        // true until something was added
+  glm::vec3 center() const;  // (0,0,0) when empty
+  glm::vec3 extent() const;  // full size, max - min; (0,0,0) when empty
+  void extend(glm::vec3 point);
 };
 
 Aabb boundsOf(const std::vector<glm::vec3>& points);
@@ -30,8 +29,8 @@ Aabb boundsOf(const std::vector<glm::vec3>& points);
 Aabb transformedBounds(const Aabb& box, const glm::mat4& matrix);
 
 struct BoundingSphere {
-    glm::vec3 center{0.0f};
-    float radius = 0.0f;
+  glm::vec3 center{0.0f};
+  float radius = 0.0f;
 };
 
 // Contains every point: the smaller of Ritter's sphere and the sphere around

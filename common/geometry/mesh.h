@@ -6,22 +6,21 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <optional>
-#include <vector>
-
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <optional>
+#include <vector>
 
 namespace stencil {
 
 struct Mesh {
-    std::vector<glm::vec3> positions;
-    // Empty, or exactly one per position.
-    std::vector<glm::vec3> normals;
-    // Triangle list; counter-clockwise seen from outside is the front face.
-    std::vector<std::uint32_t> indices;
+  std::vector<glm::vec3> positions;
+  // Empty, or exactly one per position.
+  std::vector<glm::vec3> normals;
+  // Triangle list; counter-clockwise seen from outside is the front face.
+  std::vector<std::uint32_t> indices;
 
-    std::size_t triangleCount() const;
+  std::size_t triangleCount() const;
 };
 
 // Throws std::invalid_argument naming the first problem: index count not a

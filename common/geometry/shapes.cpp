@@ -2,292 +2,297 @@
 
 #include <cmath>
 #include <cstdint>
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <limits>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
-#include <glm/geometric.hpp>
-#include <glm/vec2.hpp>
-
 namespace stencil {
 
 namespace {
 
 void requirePositive(const char* function, const char* name, float value) {
-    // Written as !(value > 0) so NaN is rejected too.
-    if (!(value > 0.0f) || !std::isfinite(value)) {
-        std::ostringstream message;
-        message << function << ": " << name << " must be positive and finite, got " << value;
-        throw std::invalid_argument(message.str());
-    }
+  // Written as !(value > 0) so NaN is rejected too.
+  if (!(value > 0.0f) || !std::isfinite(value)) {
+    std::ostringstream message;
+    message << function << ": " << name << " must be positive and finite, got " << value;
+    throw std::invalid_argument(message.str());
+  }
 }
 
 void requireAtLeast(const char* function, const char* name, int value, int minimum) {
-    if (value < minimum) {
-        std::ostringstream message;
-        message << function << ": " << name << " must be at least " << minimum << ", got " << value;
-        throw std::invalid_argument(message.str());
-    }
+  if (value < minimum) {
+    std::ostringstream message;
+    message << function << ": " << name << " must be at least " << minimum << ", got " << value;
+    throw std::invalid_argument(message.str());
+  }
 }
 
 // Indices are 32-bit, and adjacency stores face numbers as int32.
 void requireIndexable(const char* function, std::uint64_t vertexCount, std::uint64_t triangleCount) {
-    if (vertexCount > std::numeric_limits<std::uint32_t>::max() ||
-        triangleCount > static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max())) {
-        std::ostringstream message;
-        message << function << ": too many segments (" << vertexCount << " vertices, " << triangleCount
-                << " triangles)";
-        throw std::invalid_argument(message.str());
-    }
+  if (vertexCount > std::numeric_limits<std::uint32_t>::max() ||
+      triangleCount > static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max())) {
+    std::ostringstream message;
+    message << function << ": too many segments (" << vertexCount << " vertices, " << triangleCount
+            << " triangles)";
+    throw std::invalid_argument(message.str());
+  }
 }
 
 std::uint32_t u32(std::uint64_t value) {
-    return static_cast<std::uint32_t>(value);
+  return static_cast<std::uint32_t>(value);
 }
 
 // (cos, sin) of 2*pi*i/n, in double so large n stays accurate.
 glm::vec2 circlePoint(int i, int n, double offset = 0.0) {
-    const double angle = 2.0 * std::numbers::pi * (static_cast<double>(i) + offset) / static_cast<double>(n);
-    return {static_cast<float>(std::cos(angle)), static_cast<float>(std::sin(angle))};
+  const double angle = 2.0 * std::numbers::pi * (static_cast<double>(i) + offset) / static_cast<double>(n);
+  return {static_cast<float>(std::cos(angle)), static_cast<float>(std::sin(angle))};
 }
 
 void addVertex(Mesh& mesh, glm::vec3 position, glm::vec3 normal) {
-    mesh.positions.push_back(position);
-    mesh.normals.push_back(normal);
+  mesh.positions.push_back(position);
+  mesh.normals.push_back(normal);
 }
 
 void addTriangle(Mesh& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    mesh.indices.push_back(a);
-    mesh.indices.push_back(b);
-    mesh.indices.push_back(c);
+  mesh.indices.push_back(a);
+  mesh.indices.push_back(b);
+  mesh.indices.push_back(c);
 }
 
 void reserve(Mesh& mesh, std::uint64_t vertices, std::uint64_t triangles) {
-    mesh.positions.reserve(vertices);
-    mesh.normals.reserve(vertices);
-    mesh.indices.reserve(triangles * 3);
+  mesh.positions.reserve(vertices);
+  mesh.normals.reserve(vertices);
+  mesh.indices.reserve(triangles * 3);
 }
 
 }  // namespace
 
 Mesh makePlane(float halfSize, int divisions) {
-    requirePositive("makePlane", "halfSize", halfSize);
-    requireAtLeast("makePlane", "divisions", divisions, 1);
-    const std::uint64_t n = static_cast<std::uint64_t>(divisions);
-    const std::uint64_t row = n + 1;
-    requireIndexable("makePlane", row * row, 2 * n * n);
+  requirePositive("makePlane", "halfSize", halfSize);
+  requireAtLeast("makePlane", "divisions", divisions, 1);
+  const std::uint64_t n = static_cast<std::uint64_t>(divisions);
+  const std::uint64_t row = n + 1;
+  requireIndexable("makePlane", row * row, 2 * n * n);
 
-    Mesh mesh;
-    reserve(mesh, row * row, 2 * n * n);
-    const double h = halfSize;
-    for (std::uint64_t i = 0; i < row; ++i) {
-        const float z = static_cast<float>(-h + 2.0 * h * static_cast<double>(i) / static_cast<double>(n));
-        for (std::uint64_t j = 0; j < row; ++j) {
-            const float x = static_cast<float>(-h + 2.0 * h * static_cast<double>(j) / static_cast<double>(n));
-            addVertex(mesh, {x, 0.0f, z}, {0.0f, 1.0f, 0.0f});
-        }
+  Mesh mesh;
+  reserve(mesh, row * row, 2 * n * n);
+  const double h = halfSize;
+  for (std::uint64_t i = 0; i < row; ++i) {
+    const float z = static_cast<float>(-h + 2.0 * h * static_cast<double>(i) / static_cast<double>(n));
+    for (std::uint64_t j = 0; j < row; ++j) {
+      const float x = static_cast<float>(-h + 2.0 * h * static_cast<double>(j) / static_cast<double>(n));
+      addVertex(mesh, {x, 0.0f, z}, {0.0f, 1.0f, 0.0f});
     }
-    for (std::uint64_t i = 0; i < n; ++i) {
-        for (std::uint64_t j = 0; j < n; ++j) {
-            const std::uint32_t p00 = u32(i * row + j);  // +x goes along j, +z along i
-            const std::uint32_t p10 = p00 + 1;
-            const std::uint32_t p01 = u32(p00 + row);
-            const std::uint32_t p11 = p01 + 1;
-            // Turning from +z towards +x is counter-clockwise seen from +y.
-            addTriangle(mesh, p00, p01, p11);
-            addTriangle(mesh, p00, p11, p10);
-        }
+  }
+  for (std::uint64_t i = 0; i < n; ++i) {
+    for (std::uint64_t j = 0; j < n; ++j) {
+      const std::uint32_t p00 = u32(i * row + j);  // +x goes along j, +z along i
+      const std::uint32_t p10 = p00 + 1;
+      const std::uint32_t p01 = u32(p00 + row);
+      const std::uint32_t p11 = p01 + 1;
+      // Turning from +z towards +x is counter-clockwise seen from +y.
+      addTriangle(mesh, p00, p01, p11);
+      addTriangle(mesh, p00, p11, p10);
     }
-    return mesh;
+  }
+  return mesh;
 }
 
 Mesh makeCube(float halfExtent) {
-    requirePositive("makeCube", "halfExtent", halfExtent);
-    struct Face {
-        glm::vec3 normal, u, v;  // cross(u, v) == normal, so corners in u-then-v order are CCW
-    };
-    static const Face faces[6] = {
-        {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},  {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
-        {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}},  {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
-        {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},  {{0, 0, -1}, {0, 1, 0}, {1, 0, 0}},
-    };
-    Mesh mesh;
-    reserve(mesh, 24, 12);
-    for (const Face& f : faces) {
-        const std::uint32_t base = u32(mesh.positions.size());
-        // All components are 0 or +-1 before scaling, so shared corners come out
-        // bit-identical across faces and weld exactly.
-        addVertex(mesh, (f.normal - f.u - f.v) * halfExtent, f.normal);
-        addVertex(mesh, (f.normal + f.u - f.v) * halfExtent, f.normal);
-        addVertex(mesh, (f.normal + f.u + f.v) * halfExtent, f.normal);
-        addVertex(mesh, (f.normal - f.u + f.v) * halfExtent, f.normal);
-        addTriangle(mesh, base, base + 1, base + 2);
-        addTriangle(mesh, base, base + 2, base + 3);
-    }
-    return mesh;
+  requirePositive("makeCube", "halfExtent", halfExtent);
+  struct Face {
+    glm::vec3 normal, u, v;  // cross(u, v) == normal, so corners in u-then-v order are CCW
+  };
+  static const Face faces[6] = {
+      {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
+      {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}}, {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
+      {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}}, {{0, 0, -1}, {0, 1, 0}, {1, 0, 0}},
+  };
+  Mesh mesh;
+  reserve(mesh, 24, 12);
+  for (const Face& f : faces) {
+    const std::uint32_t base = u32(mesh.positions.size());
+    // All components are 0 or +-1 before scaling, so shared corners come out
+    // bit-identical across faces and weld exactly.
+    addVertex(mesh, (f.normal - f.u - f.v) * halfExtent, f.normal);
+    addVertex(mesh, (f.normal + f.u - f.v) * halfExtent, f.normal);
+    addVertex(mesh, (f.normal + f.u + f.v) * halfExtent, f.normal);
+    addVertex(mesh, (f.normal - f.u + f.v) * halfExtent, f.normal);
+    addTriangle(mesh, base, base + 1, base + 2);
+    addTriangle(mesh, base, base + 2, base + 3);
+  }
+  return mesh;
 }
 
 Mesh makeSphere(float radius, int slices, int stacks) {
-    requirePositive("makeSphere", "radius", radius);
-    requireAtLeast("makeSphere", "slices", slices, 3);
-    requireAtLeast("makeSphere", "stacks", stacks, 2);
-    const std::uint64_t s = static_cast<std::uint64_t>(slices);
-    const std::uint64_t rings = static_cast<std::uint64_t>(stacks) - 1;
-    requireIndexable("makeSphere", s * rings + 2, 2 * s * rings);
+  requirePositive("makeSphere", "radius", radius);
+  requireAtLeast("makeSphere", "slices", slices, 3);
+  requireAtLeast("makeSphere", "stacks", stacks, 2);
+  const std::uint64_t s = static_cast<std::uint64_t>(slices);
+  const std::uint64_t rings = static_cast<std::uint64_t>(stacks) - 1;
+  requireIndexable("makeSphere", s * rings + 2, 2 * s * rings);
 
-    Mesh mesh;
-    reserve(mesh, s * rings + 2, 2 * s * rings);
-    addVertex(mesh, {0.0f, radius, 0.0f}, {0.0f, 1.0f, 0.0f});
-    for (std::uint64_t i = 1; i <= rings; ++i) {
-        const double phi = std::numbers::pi * static_cast<double>(i) / static_cast<double>(stacks);
-        const float ringRadius = static_cast<float>(std::sin(phi));
-        const float y = static_cast<float>(std::cos(phi));
-        for (int j = 0; j < slices; ++j) {
-            const glm::vec2 c = circlePoint(j, slices);
-            const glm::vec3 direction(ringRadius * c.x, y, ringRadius * c.y);
-            addVertex(mesh, direction * radius, glm::normalize(direction));
-        }
+  Mesh mesh;
+  reserve(mesh, s * rings + 2, 2 * s * rings);
+  addVertex(mesh, {0.0f, radius, 0.0f}, {0.0f, 1.0f, 0.0f});
+  for (std::uint64_t i = 1; i <= rings; ++i) {
+    const double phi = std::numbers::pi * static_cast<double>(i) / static_cast<double>(stacks);
+    const float ringRadius = static_cast<float>(std::sin(phi));
+    const float y = static_cast<float>(std::cos(phi));
+    for (int j = 0; j < slices; ++j) {
+      const glm::vec2 c = circlePoint(j, slices);
+      const glm::vec3 direction(ringRadius * c.x, y, ringRadius * c.y);
+      addVertex(mesh, direction * radius, glm::normalize(direction));
     }
-    const std::uint32_t south = u32(s * rings + 1);
-    addVertex(mesh, {0.0f, -radius, 0.0f}, {0.0f, -1.0f, 0.0f});
+  }
+  const std::uint32_t south = u32(s * rings + 1);
+  addVertex(mesh, {0.0f, -radius, 0.0f}, {0.0f, -1.0f, 0.0f});
 
-    // Ring i (1-based), slice j; slices wrap so there is no seam to weld.
-    auto ring = [&](std::uint64_t i, std::uint64_t j) { return u32(1 + (i - 1) * s + j % s); };
+  // Ring i (1-based), slice j; slices wrap so there is no seam to weld.
+  auto ring = [&](std::uint64_t i, std::uint64_t j) { return u32(1 + (i - 1) * s + j % s); };
+  for (std::uint64_t j = 0; j < s; ++j) {
+    addTriangle(mesh, 0, ring(1, j + 1), ring(1, j));
+  }
+  for (std::uint64_t i = 1; i < rings; ++i) {
     for (std::uint64_t j = 0; j < s; ++j) {
-        addTriangle(mesh, 0, ring(1, j + 1), ring(1, j));
+      // a above b; c, d one slice further round (towards +z from +x).
+      const std::uint32_t a = ring(i, j), b = ring(i + 1, j), c = ring(i + 1, j + 1), d = ring(i, j + 1);
+      addTriangle(mesh, a, c, b);
+      addTriangle(mesh, a, d, c);
     }
-    for (std::uint64_t i = 1; i < rings; ++i) {
-        for (std::uint64_t j = 0; j < s; ++j) {
-            // a above b; c, d one slice further round (towards +z from +x).
-            const std::uint32_t a = ring(i, j), b = ring(i + 1, j), c = ring(i + 1, j + 1), d = ring(i, j + 1);
-            addTriangle(mesh, a, c, b);
-            addTriangle(mesh, a, d, c);
-        }
-    }
-    for (std::uint64_t j = 0; j < s; ++j) {
-        addTriangle(mesh, ring(rings, j), ring(rings, j + 1), south);
-    }
-    return mesh;
+  }
+  for (std::uint64_t j = 0; j < s; ++j) {
+    addTriangle(mesh, ring(rings, j), ring(rings, j + 1), south);
+  }
+  return mesh;
 }
 
 Mesh makeTorus(float majorRadius, float minorRadius, int majorSegments, int minorSegments) {
-    requirePositive("makeTorus", "majorRadius", majorRadius);
-    requirePositive("makeTorus", "minorRadius", minorRadius);
-    if (!(minorRadius < majorRadius)) {
-        std::ostringstream message;
-        message << "makeTorus: minorRadius (" << minorRadius << ") must be smaller than majorRadius ("
-                << majorRadius << ") or the surface intersects itself";
-        throw std::invalid_argument(message.str());
-    }
-    requireAtLeast("makeTorus", "majorSegments", majorSegments, 3);
-    requireAtLeast("makeTorus", "minorSegments", minorSegments, 3);
-    const std::uint64_t majorCount = static_cast<std::uint64_t>(majorSegments);
-    const std::uint64_t minorCount = static_cast<std::uint64_t>(minorSegments);
-    requireIndexable("makeTorus", majorCount * minorCount, 2 * majorCount * minorCount);
+  requirePositive("makeTorus", "majorRadius", majorRadius);
+  requirePositive("makeTorus", "minorRadius", minorRadius);
+  if (!(minorRadius < majorRadius)) {
+    std::ostringstream message;
+    message << "makeTorus: minorRadius (" << minorRadius << ") must be smaller than majorRadius ("
+            << majorRadius << ") or the surface intersects itself";
+    throw std::invalid_argument(message.str());
+  }
+  requireAtLeast("makeTorus", "majorSegments", majorSegments, 3);
+  requireAtLeast("makeTorus", "minorSegments", minorSegments, 3);
+  const std::uint64_t majorCount = static_cast<std::uint64_t>(majorSegments);
+  const std::uint64_t minorCount = static_cast<std::uint64_t>(minorSegments);
+  requireIndexable("makeTorus", majorCount * minorCount, 2 * majorCount * minorCount);
 
-    Mesh mesh;
-    reserve(mesh, majorCount * minorCount, 2 * majorCount * minorCount);
-    for (int i = 0; i < majorSegments; ++i) {
-        const glm::vec2 around = circlePoint(i, majorSegments);
-        const glm::vec3 radial(around.x, 0.0f, around.y);
-        for (int j = 0; j < minorSegments; ++j) {
-            const glm::vec2 tube = circlePoint(j, minorSegments);
-            // Normal of the tube circle: outward from the tube's centre line.
-            const glm::vec3 normal = glm::normalize(radial * tube.x + glm::vec3(0.0f, tube.y, 0.0f));
-            addVertex(mesh, radial * majorRadius + normal * minorRadius, normal);
-        }
+  Mesh mesh;
+  reserve(mesh, majorCount * minorCount, 2 * majorCount * minorCount);
+  for (int i = 0; i < majorSegments; ++i) {
+    const glm::vec2 around = circlePoint(i, majorSegments);
+    const glm::vec3 radial(around.x, 0.0f, around.y);
+    for (int j = 0; j < minorSegments; ++j) {
+      const glm::vec2 tube = circlePoint(j, minorSegments);
+      // Normal of the tube circle: outward from the tube's centre line.
+      const glm::vec3 normal = glm::normalize(radial * tube.x + glm::vec3(0.0f, tube.y, 0.0f));
+      addVertex(mesh, radial * majorRadius + normal * minorRadius, normal);
     }
-    auto at = [&](std::uint64_t i, std::uint64_t j) { return u32((i % majorCount) * minorCount + j % minorCount); };
-    for (std::uint64_t i = 0; i < majorCount; ++i) {
-        for (std::uint64_t j = 0; j < minorCount; ++j) {
-            // b is one step round the y axis (towards +z), d one step round the tube (towards +y at the outer rim).
-            const std::uint32_t a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
-            addTriangle(mesh, a, d, c);
-            addTriangle(mesh, a, c, b);
-        }
+  }
+  auto at = [&](std::uint64_t i, std::uint64_t j) {
+    return u32((i % majorCount) * minorCount + j % minorCount);
+  };
+  for (std::uint64_t i = 0; i < majorCount; ++i) {
+    for (std::uint64_t j = 0; j < minorCount; ++j) {
+      // b is one step round the y axis (towards +z), d one step round the tube (towards +y at the outer rim).
+      const std::uint32_t a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      addTriangle(mesh, a, d, c);
+      addTriangle(mesh, a, c, b);
     }
-    return mesh;
+  }
+  return mesh;
 }
 
 Mesh makeCylinder(float radius, float height, int slices) {
-    requirePositive("makeCylinder", "radius", radius);
-    requirePositive("makeCylinder", "height", height);
-    requireAtLeast("makeCylinder", "slices", slices, 3);
-    const std::uint64_t s = static_cast<std::uint64_t>(slices);
-    requireIndexable("makeCylinder", 4 * s + 2, 4 * s);
+  requirePositive("makeCylinder", "radius", radius);
+  requirePositive("makeCylinder", "height", height);
+  requireAtLeast("makeCylinder", "slices", slices, 3);
+  const std::uint64_t s = static_cast<std::uint64_t>(slices);
+  requireIndexable("makeCylinder", 4 * s + 2, 4 * s);
 
-    const float top = 0.5f * height;
-    const float bottom = -top;
-    Mesh mesh;
-    reserve(mesh, 4 * s + 2, 4 * s);
-    // Rim positions are computed once and reused so side and cap copies weld exactly.
-    std::vector<glm::vec3> radial(s);
-    for (int j = 0; j < slices; ++j) {
-        const glm::vec2 c = circlePoint(j, slices);
-        radial[static_cast<std::size_t>(j)] = {c.x, 0.0f, c.y};
-    }
-    auto rim = [&](std::uint64_t j, float y) { return glm::vec3(radial[j] * radius) + glm::vec3(0.0f, y, 0.0f); };
+  const float top = 0.5f * height;
+  const float bottom = -top;
+  Mesh mesh;
+  reserve(mesh, 4 * s + 2, 4 * s);
+  // Rim positions are computed once and reused so side and cap copies weld exactly.
+  std::vector<glm::vec3> radial(s);
+  for (int j = 0; j < slices; ++j) {
+    const glm::vec2 c = circlePoint(j, slices);
+    radial[static_cast<std::size_t>(j)] = {c.x, 0.0f, c.y};
+  }
+  auto rim = [&](std::uint64_t j, float y) {
+    return glm::vec3(radial[j] * radius) + glm::vec3(0.0f, y, 0.0f);
+  };
 
-    const std::uint32_t sideTop = 0, sideBottom = u32(s);
-    for (std::uint64_t j = 0; j < s; ++j) addVertex(mesh, rim(j, top), radial[j]);
-    for (std::uint64_t j = 0; j < s; ++j) addVertex(mesh, rim(j, bottom), radial[j]);
-    const std::uint32_t topCentre = u32(2 * s), topRing = topCentre + 1;
-    addVertex(mesh, {0.0f, top, 0.0f}, {0.0f, 1.0f, 0.0f});
-    for (std::uint64_t j = 0; j < s; ++j) addVertex(mesh, rim(j, top), {0.0f, 1.0f, 0.0f});
-    const std::uint32_t bottomCentre = u32(3 * s + 1), bottomRing = bottomCentre + 1;
-    addVertex(mesh, {0.0f, bottom, 0.0f}, {0.0f, -1.0f, 0.0f});
-    for (std::uint64_t j = 0; j < s; ++j) addVertex(mesh, rim(j, bottom), {0.0f, -1.0f, 0.0f});
+  const std::uint32_t sideTop = 0, sideBottom = u32(s);
+  for (std::uint64_t j = 0; j < s; ++j) addVertex(mesh, rim(j, top), radial[j]);
+  for (std::uint64_t j = 0; j < s; ++j) addVertex(mesh, rim(j, bottom), radial[j]);
+  const std::uint32_t topCentre = u32(2 * s), topRing = topCentre + 1;
+  addVertex(mesh, {0.0f, top, 0.0f}, {0.0f, 1.0f, 0.0f});
+  for (std::uint64_t j = 0; j < s; ++j) addVertex(mesh, rim(j, top), {0.0f, 1.0f, 0.0f});
+  const std::uint32_t bottomCentre = u32(3 * s + 1), bottomRing = bottomCentre + 1;
+  addVertex(mesh, {0.0f, bottom, 0.0f}, {0.0f, -1.0f, 0.0f});
+  for (std::uint64_t j = 0; j < s; ++j) addVertex(mesh, rim(j, bottom), {0.0f, -1.0f, 0.0f});
 
-    for (std::uint64_t j = 0; j < s; ++j) {
-        const std::uint32_t j0 = u32(j), j1 = u32((j + 1) % s);
-        addTriangle(mesh, sideTop + j0, sideBottom + j1, sideBottom + j0);
-        addTriangle(mesh, sideTop + j0, sideTop + j1, sideBottom + j1);
-        addTriangle(mesh, topCentre, topRing + j1, topRing + j0);
-        addTriangle(mesh, bottomCentre, bottomRing + j0, bottomRing + j1);
-    }
-    return mesh;
+  for (std::uint64_t j = 0; j < s; ++j) {
+    const std::uint32_t j0 = u32(j), j1 = u32((j + 1) % s);
+    addTriangle(mesh, sideTop + j0, sideBottom + j1, sideBottom + j0);
+    addTriangle(mesh, sideTop + j0, sideTop + j1, sideBottom + j1);
+    addTriangle(mesh, topCentre, topRing + j1, topRing + j0);
+    addTriangle(mesh, bottomCentre, bottomRing + j0, bottomRing + j1);
+  }
+  return mesh;
 }
 
 Mesh makeCone(float radius, float height, int slices) {
-    requirePositive("makeCone", "radius", radius);
-    requirePositive("makeCone", "height", height);
-    requireAtLeast("makeCone", "slices", slices, 3);
-    const std::uint64_t s = static_cast<std::uint64_t>(slices);
-    requireIndexable("makeCone", 3 * s + 1, 2 * s);
+  requirePositive("makeCone", "radius", radius);
+  requirePositive("makeCone", "height", height);
+  requireAtLeast("makeCone", "slices", slices, 3);
+  const std::uint64_t s = static_cast<std::uint64_t>(slices);
+  requireIndexable("makeCone", 3 * s + 1, 2 * s);
 
-    const float base = -0.5f * height;
-    const glm::vec3 apex(0.0f, 0.5f * height, 0.0f);
-    // The side's profile runs from (radius, base) up to (0, apex); rotating its
-    // direction (-radius, height) by -90 degrees gives the outward normal
-    // (height, radius) in (radial, y).
-    auto slantNormal = [&](glm::vec2 c) { return glm::normalize(glm::vec3(height * c.x, radius, height * c.y)); };
+  const float base = -0.5f * height;
+  const glm::vec3 apex(0.0f, 0.5f * height, 0.0f);
+  // The side's profile runs from (radius, base) up to (0, apex); rotating its
+  // direction (-radius, height) by -90 degrees gives the outward normal
+  // (height, radius) in (radial, y).
+  auto slantNormal = [&](glm::vec2 c) {
+    return glm::normalize(glm::vec3(height * c.x, radius, height * c.y));
+  };
 
-    Mesh mesh;
-    reserve(mesh, 3 * s + 1, 2 * s);
-    std::vector<glm::vec3> rim(s);
-    for (int j = 0; j < slices; ++j) {
-        const glm::vec2 c = circlePoint(j, slices);
-        rim[static_cast<std::size_t>(j)] = {radius * c.x, base, radius * c.y};
-        addVertex(mesh, rim[static_cast<std::size_t>(j)], slantNormal(c));
-    }
-    const std::uint32_t apexes = u32(s);
-    for (int j = 0; j < slices; ++j) {
-        // The apex has no single normal; each slice's copy takes the smooth
-        // cone's normal at the middle of the slice.
-        addVertex(mesh, apex, slantNormal(circlePoint(j, slices, 0.5)));
-    }
-    const std::uint32_t centre = u32(2 * s), ring = centre + 1;
-    addVertex(mesh, {0.0f, base, 0.0f}, {0.0f, -1.0f, 0.0f});
-    for (std::uint64_t j = 0; j < s; ++j) addVertex(mesh, rim[j], {0.0f, -1.0f, 0.0f});
+  Mesh mesh;
+  reserve(mesh, 3 * s + 1, 2 * s);
+  std::vector<glm::vec3> rim(s);
+  for (int j = 0; j < slices; ++j) {
+    const glm::vec2 c = circlePoint(j, slices);
+    rim[static_cast<std::size_t>(j)] = {radius * c.x, base, radius * c.y};
+    addVertex(mesh, rim[static_cast<std::size_t>(j)], slantNormal(c));
+  }
+  const std::uint32_t apexes = u32(s);
+  for (int j = 0; j < slices; ++j) {
+    // The apex has no single normal; each slice's copy takes the smooth
+    // cone's normal at the middle of the slice.
+    addVertex(mesh, apex, slantNormal(circlePoint(j, slices, 0.5)));
+  }
+  const std::uint32_t centre = u32(2 * s), ring = centre + 1;
+  addVertex(mesh, {0.0f, base, 0.0f}, {0.0f, -1.0f, 0.0f});
+  for (std::uint64_t j = 0; j < s; ++j) addVertex(mesh, rim[j], {0.0f, -1.0f, 0.0f});
 
-    for (std::uint64_t j = 0; j < s; ++j) {
-        const std::uint32_t j0 = u32(j), j1 = u32((j + 1) % s);
-        addTriangle(mesh, j0, apexes + j0, j1);
-        addTriangle(mesh, centre, ring + j0, ring + j1);
-    }
-    return mesh;
+  for (std::uint64_t j = 0; j < s; ++j) {
+    const std::uint32_t j0 = u32(j), j1 = u32((j + 1) % s);
+    addTriangle(mesh, j0, apexes + j0, j1);
+    addTriangle(mesh, centre, ring + j0, ring + j1);
+  }
+  return mesh;
 }
 
 }  // namespace stencil

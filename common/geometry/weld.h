@@ -13,9 +13,9 @@
 namespace stencil {
 
 struct WeldResult {
-    Mesh mesh;
-    // remap[old vertex] == new vertex; mesh.indices[k] == remap[input.indices[k]].
-    std::vector<std::uint32_t> remap;
+  Mesh mesh;
+  // remap[old vertex] == new vertex; mesh.indices[k] == remap[input.indices[k]].
+  std::vector<std::uint32_t> remap;
 };
 
 // Merges vertices whose positions compare equal with ==, so -0.0 and +0.0

@@ -82,7 +82,8 @@ BackendChoice chooseBackend(std::optional<Backend> requested, bool headless) {
   if (!headless && display) return {Backend::Window, "a display is available"};
   std::string why = headless ? "--headless" : "no display";
   if (osmesaAvailable())
-    return {Backend::Osmesa, why + "; OSMesa is the deterministic software default (--backend egl for a GPU)"};
+    return {Backend::Osmesa,
+            why + "; OSMesa is the deterministic software default (--backend egl for a GPU)"};
   return {Backend::Egl, why + "; built without OSMesa"};
 }
 

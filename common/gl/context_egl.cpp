@@ -62,15 +62,28 @@ class EglContext final : public Context {
     EGLConfig config = nullptr;
     EGLint found = 0;
     for (EGLint surfaceType : {EGL_PBUFFER_BIT, 0}) {
-      const EGLint attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE, surfaceType,
-                                EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_NONE};
+      const EGLint attribs[] = {EGL_RENDERABLE_TYPE,
+                                EGL_OPENGL_BIT,
+                                EGL_SURFACE_TYPE,
+                                surfaceType,
+                                EGL_RED_SIZE,
+                                8,
+                                EGL_GREEN_SIZE,
+                                8,
+                                EGL_BLUE_SIZE,
+                                8,
+                                EGL_NONE};
       if (eglChooseConfig(display_, attribs, &config, 1, &found) && found > 0) break;
     }
     if (found == 0) throw NoContextError("EGL offers no OpenGL config");
 
-    const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+    const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                     3,
+                                     EGL_CONTEXT_MINOR_VERSION,
+                                     3,
                                      EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                     EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+                                     EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                     EGL_NONE};
     context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, contextAttribs);
     if (context_ == EGL_NO_CONTEXT) throw NoContextError("EGL could not create a GL 3.3 core context");
 
@@ -81,8 +94,7 @@ class EglContext final : public Context {
       const EGLint pbuffer[] = {EGL_WIDTH, 1, EGL_HEIGHT, 1, EGL_NONE};
       surface_ = surface = eglCreatePbufferSurface(display_, config, pbuffer);
     }
-    if (!eglMakeCurrent(display_, surface, surface, context_))
-      throw NoContextError("eglMakeCurrent failed");
+    if (!eglMakeCurrent(display_, surface, surface, context_)) throw NoContextError("eglMakeCurrent failed");
     loadGl([](const char* name) { return reinterpret_cast<GlProc>(eglGetProcAddress(name)); });
   }
   ~EglContext() override {
@@ -101,6 +113,8 @@ class EglContext final : public Context {
 
 }  // namespace
 
-std::unique_ptr<Context> createEglContext() { return std::make_unique<EglContext>(); }
+std::unique_ptr<Context> createEglContext() {
+  return std::make_unique<EglContext>();
+}
 
 }  // namespace stencil

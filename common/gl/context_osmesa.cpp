@@ -16,12 +16,18 @@ class OsmesaContext final : public Context {
   OsmesaContext() {
     // Core 3.3; the default framebuffer's depth/stencil are unused: lessons render into
     // a Framebuffer object whose stencil bits the framework verifies.
-    const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA,
-                           OSMESA_DEPTH_BITS, 0,
-                           OSMESA_STENCIL_BITS, 0,
-                           OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                           OSMESA_CONTEXT_MAJOR_VERSION, 3,
-                           OSMESA_CONTEXT_MINOR_VERSION, 3,
+    const int attribs[] = {OSMESA_FORMAT,
+                           OSMESA_RGBA,
+                           OSMESA_DEPTH_BITS,
+                           0,
+                           OSMESA_STENCIL_BITS,
+                           0,
+                           OSMESA_PROFILE,
+                           OSMESA_CORE_PROFILE,
+                           OSMESA_CONTEXT_MAJOR_VERSION,
+                           3,
+                           OSMESA_CONTEXT_MINOR_VERSION,
+                           3,
                            0};
     ctx_ = OSMesaCreateContextAttribs(attribs, nullptr);
     if (!ctx_) throw NoContextError("OSMesa could not create a GL 3.3 core context");
@@ -41,7 +47,9 @@ class OsmesaContext final : public Context {
 
 }  // namespace
 
-std::unique_ptr<Context> createOsmesaContext(int, int) { return std::make_unique<OsmesaContext>(); }
+std::unique_ptr<Context> createOsmesaContext(int, int) {
+  return std::make_unique<OsmesaContext>();
+}
 
 }  // namespace stencil
 

@@ -42,7 +42,8 @@ ImageDiff diffColour(const Image& actual, const Image& expected, int maxChannelD
   for (int y = 0; y < actual.height; ++y)
     for (int x = 0; x < actual.width; ++x) {
       int worst = 0;
-      for (int c = 0; c < 4; ++c) worst = std::max(worst, std::abs(actual.at(x, y)[c] - expected.at(x, y)[c]));
+      for (int c = 0; c < 4; ++c)
+        worst = std::max(worst, std::abs(actual.at(x, y)[c] - expected.at(x, y)[c]));
       d.maxChannelDiff = std::max(d.maxChannelDiff, worst);
       if (worst > maxChannelDiff) {
         ++d.differing;
@@ -101,8 +102,8 @@ GoldenResult checkGolden(const Image& colour, const Image& stencil, const std::f
   const bool passed = s.differing == 0 && fraction <= tolerance.maxFraction;
   std::ostringstream msg;
   msg << "stencil: " << s.differing << " of " << s.pixels << " pixels differ; colour: " << c.differing
-      << " pixels (" << fraction * 100 << "%) over " << tolerance.maxChannelDiff
-      << "/255, max channel diff " << c.maxChannelDiff << ", allowed " << tolerance.maxFraction * 100 << "%";
+      << " pixels (" << fraction * 100 << "%) over " << tolerance.maxChannelDiff << "/255, max channel diff "
+      << c.maxChannelDiff << ", allowed " << tolerance.maxFraction * 100 << "%";
   if (passed) return {true, msg.str()};
 
   std::filesystem::create_directories(artifacts);

@@ -14,7 +14,9 @@ struct Image {
   Image() = default;
   Image(int w, int h, int c) : width(w), height(h), channels(c), pixels(static_cast<size_t>(w) * h * c) {}
   std::uint8_t* at(int x, int y) { return &pixels[(static_cast<size_t>(y) * width + x) * channels]; }
-  const std::uint8_t* at(int x, int y) const { return &pixels[(static_cast<size_t>(y) * width + x) * channels]; }
+  const std::uint8_t* at(int x, int y) const {
+    return &pixels[(static_cast<size_t>(y) * width + x) * channels];
+  }
 };
 
 // Writes a PNG, creating parent folders. Throws std::runtime_error on failure.

@@ -2,11 +2,10 @@
 
 #include <chrono>
 #include <cstdio>
+#include <glm/gtc/matrix_transform.hpp>
 #include <iostream>
 #include <numeric>
 #include <sstream>
-
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/debug.h"
 #include "gl/errors.h"
@@ -43,9 +42,12 @@ bool hasFeature(const GlFeatures& g, Feature f) {
 
 glm::vec3 OrbitCamera::eye() const {
   const float az = glm::radians(azimuthDeg), el = glm::radians(elevationDeg);
-  return target + distance * glm::vec3(std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el));
+  return target +
+         distance * glm::vec3(std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el));
 }
-glm::mat4 OrbitCamera::view() const { return glm::lookAt(eye(), target, glm::vec3(0, 1, 0)); }
+glm::mat4 OrbitCamera::view() const {
+  return glm::lookAt(eye(), target, glm::vec3(0, 1, 0));
+}
 glm::mat4 OrbitCamera::projection(float aspect) const {
   return glm::perspective(glm::radians(fovyDeg), aspect, nearPlane, farPlane);
 }
@@ -67,7 +69,9 @@ int Frame::option(std::string_view name) const {
   throw std::logic_error("the lesson reads option '" + std::string(name) + "', which it does not declare");
 }
 
-void Frame::pass(std::string_view name) { recorder_.pass(name); }
+void Frame::pass(std::string_view name) {
+  recorder_.pass(name);
+}
 
 // ---- session --------------------------------------------------------------------------
 
@@ -101,12 +105,14 @@ void Session::makeFramebuffer(int width, int height) {
   recorder.reset();
   framebuffer = std::make_unique<Framebuffer>(width, height, commandLine.stencilBits);
   if (framebuffer->stencilBits() < info.stencilBits)
-    throw UsageError("the framebuffer has " + std::to_string(framebuffer->stencilBits()) +
-                     " stencil bits; " + info.id + " needs " + std::to_string(info.stencilBits));
+    throw UsageError("the framebuffer has " + std::to_string(framebuffer->stencilBits()) + " stencil bits; " +
+                     info.id + " needs " + std::to_string(info.stencilBits));
   recorder = std::make_unique<PassRecorder>(info.passes, *framebuffer, context->features());
 }
 
-void Session::resize(int width, int height) { makeFramebuffer(width, height); }
+void Session::resize(int width, int height) {
+  makeFramebuffer(width, height);
+}
 
 void Session::renderFrame(double time, FrameRequest request) {
   framebuffer->bind();
@@ -138,14 +144,19 @@ std::string jsonNumber(double v) {
   std::snprintf(buf, sizeof buf, "%.4f", v);
   return buf;
 }
-std::string jsonNumber(const std::optional<double>& v) { return v ? jsonNumber(*v) : "null"; }
-std::string jsonNumber(const std::optional<std::uint64_t>& v) { return v ? std::to_string(*v) : "null"; }
+std::string jsonNumber(const std::optional<double>& v) {
+  return v ? jsonNumber(*v) : "null";
+}
+std::string jsonNumber(const std::optional<std::uint64_t>& v) {
+  return v ? std::to_string(*v) : "null";
+}
 
 std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
   const auto& passes = s.recorder->passStats();
   std::ostringstream out;
   const GlFeatures& f = s.context->features();
-  out << std::boolalpha << "{\n  \"lesson\": \"" << s.info.id << "\",\n  \"variant\": \"" << s.variant << "\",\n"
+  out << std::boolalpha << "{\n  \"lesson\": \"" << s.info.id << "\",\n  \"variant\": \"" << s.variant
+      << "\",\n"
       << "  \"backend\": \"" << backendName(s.context->backend()) << "\",\n  \"renderer\": \"" << f.renderer
       << "\",\n  \"size\": [" << s.framebuffer->width() << ", " << s.framebuffer->height() << "],\n"
       << "  \"time\": " << s.commandLine.time << ",\n  \"frames\": " << frameMs.size() << ",\n"
@@ -206,13 +217,14 @@ int runHeadless(Session& s) {
   std::vector<double> frameMs;
   for (int i = 0; i < frames; ++i) {
     const bool last = i + 1 == frames;
-    FrameRequest request{.measure = cl.stats, .captureAll = last && cl.passesDir.has_value(), .captureOnly = {}};
+    FrameRequest request{
+        .measure = cl.stats, .captureAll = last && cl.passesDir.has_value(), .captureOnly = {}};
     const auto start = std::chrono::steady_clock::now();
     s.renderFrame(cl.time + i / 60.0, request);
     glFinish();
-    frameMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-    if (frames > 1 && !cl.quiet && (i + 1) % 60 == 0)
-      std::cerr << "frame " << i + 1 << "/" << frames << "\n";
+    frameMs.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    if (frames > 1 && !cl.quiet && (i + 1) % 60 == 0) std::cerr << "frame " << i + 1 << "/" << frames << "\n";
   }
   return finishRun(s, s.framebuffer->readColour(), s.framebuffer->readStencil(), frameMs);
 }

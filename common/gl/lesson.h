@@ -4,13 +4,12 @@
 // every lesson. The stencil, depth, colour-mask and cull calls stay in the lesson.
 #pragma once
 #include <functional>
+#include <glm/glm.hpp>
 #include <memory>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "gl/context.h"
 

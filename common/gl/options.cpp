@@ -53,9 +53,12 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
       if (i + 1 >= argc) throw UsageError(flag + " needs a value; --help shows the flags");
       return argv[++i];
     };
-    if (flag == "--help" || flag == "-h") cl.help = true;
-    else if (flag == "--list-variants") cl.listVariants = true;
-    else if (flag == "--headless") cl.headless = true;
+    if (flag == "--help" || flag == "-h")
+      cl.help = true;
+    else if (flag == "--list-variants")
+      cl.listVariants = true;
+    else if (flag == "--headless")
+      cl.headless = true;
     else if (flag == "--backend") {
       const std::string name = value();
       cl.backend = parseBackend(name);
@@ -68,36 +71,50 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
       cl.height = parseNumber<int>("--size", s.substr(x + 1));
       if (cl.width < 1 || cl.height < 1 || cl.width > 8192 || cl.height > 8192)
         throw UsageError("--size must be between 1x1 and 8192x8192, got '" + s + "'");
-    } else if (flag == "--time") cl.time = parseNumber<double>(flag, value());
+    } else if (flag == "--time")
+      cl.time = parseNumber<double>(flag, value());
     else if (flag == "--frames") {
       cl.frames = parseNumber<int>(flag, value());
       if (*cl.frames < 1) throw UsageError("--frames must be at least 1");
-    } else if (flag == "--variant") cl.variant = value();
+    } else if (flag == "--variant")
+      cl.variant = value();
     else if (flag == "--set") {
       const std::string s = value();
       const auto eq = s.find('=');
       if (eq == std::string::npos) throw UsageError("--set expects NAME=VALUE, got '" + s + "'");
-      cl.settings.emplace_back(s.substr(0, eq), parseNumber<int>("--set " + s.substr(0, eq), s.substr(eq + 1)));
-    } else if (flag == "--out") cl.out = value();
-    else if (flag == "--stencil-out") cl.stencilOut = value();
+      cl.settings.emplace_back(s.substr(0, eq),
+                               parseNumber<int>("--set " + s.substr(0, eq), s.substr(eq + 1)));
+    } else if (flag == "--out")
+      cl.out = value();
+    else if (flag == "--stencil-out")
+      cl.stencilOut = value();
     else if (flag == "--stencil-view") {
       const std::string v = value();
       if (v != "ramp" && v != "bits") throw UsageError("--stencil-view takes ramp or bits, got '" + v + "'");
       cl.stencilBitPlanes = v == "bits";
-    } else if (flag == "--passes") cl.passesDir = value();
-    else if (flag == "--stats") cl.stats = true;
-    else if (flag == "--golden") cl.golden = value();
-    else if (flag == "--update-golden") cl.updateGolden = true;
-    else if (flag == "--artifacts") cl.artifacts = value();
-    else if (flag == "--shader-dir") cl.shaderDir = value();
+    } else if (flag == "--passes")
+      cl.passesDir = value();
+    else if (flag == "--stats")
+      cl.stats = true;
+    else if (flag == "--golden")
+      cl.golden = value();
+    else if (flag == "--update-golden")
+      cl.updateGolden = true;
+    else if (flag == "--artifacts")
+      cl.artifacts = value();
+    else if (flag == "--shader-dir")
+      cl.shaderDir = value();
     else if (flag == "--stencil-bits") {
       cl.stencilBits = parseNumber<int>(flag, value());
       if (cl.stencilBits != 0 && cl.stencilBits != 8) throw UsageError("--stencil-bits takes 8 or 0");
-    } else if (flag == "--quiet" || flag == "-q") cl.quiet = true;
-    else throw UsageError("unknown flag '" + flag + "'; --help shows the flags");
+    } else if (flag == "--quiet" || flag == "-q")
+      cl.quiet = true;
+    else
+      throw UsageError("unknown flag '" + flag + "'; --help shows the flags");
   }
   if (cl.updateGolden && !cl.golden) throw UsageError("--update-golden needs --golden DIR");
-  if (cl.headless && cl.backend == Backend::Window) throw UsageError("--headless contradicts --backend window");
+  if (cl.headless && cl.backend == Backend::Window)
+    throw UsageError("--headless contradicts --backend window");
   optionsFor(info, cl.variant, cl.settings);  // validates --variant and --set now, not after start-up
   return cl;
 }
@@ -110,7 +127,8 @@ std::string variantList(const LessonInfo& info) {
 
 std::string helpText(const LessonInfo& info, const std::string& program) {
   std::ostringstream out;
-  out << info.id << ": " << info.title << "\n" << info.summary << "\n\n"
+  out << info.id << ": " << info.title << "\n"
+      << info.summary << "\n\n"
       << "usage: " << program << " [flags]\n\n"
       << "Context\n"
       << "  --headless               render off-screen even when a display exists\n"
@@ -147,8 +165,8 @@ std::string helpText(const LessonInfo& info, const std::string& program) {
   if (!info.options.empty()) {
     out << "\nOptions (--set NAME=VALUE, or the key in the window)\n";
     for (const Option& o : info.options)
-      out << "  " << o.name << " [" << o.key << "] 0.." << o.max << " (default " << o.value << ")  "
-          << o.help << "\n";
+      out << "  " << o.name << " [" << o.key << "] 0.." << o.max << " (default " << o.value << ")  " << o.help
+          << "\n";
   }
   out << "\nVariants\n";
   for (const Variant& v : info.variants) out << "  " << v.name << "  " << v.help << "\n";

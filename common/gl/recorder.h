@@ -19,10 +19,10 @@ namespace stencil {
 struct PassStats {
   std::string name;
   std::uint64_t drawCalls = 0;
-  std::uint64_t triangles = 0;                      // counted on the CPU at each draw
-  std::optional<std::uint64_t> samplesPassed;       // occlusion query: fragments that passed
-  std::optional<std::uint64_t> primitivesSubmitted; // ARB_pipeline_statistics_query, if present
-  std::optional<double> gpuMs;                      // timer query
+  std::uint64_t triangles = 0;                       // counted on the CPU at each draw
+  std::optional<std::uint64_t> samplesPassed;        // occlusion query: fragments that passed
+  std::optional<std::uint64_t> primitivesSubmitted;  // ARB_pipeline_statistics_query, if present
+  std::optional<double> gpuMs;                       // timer query
   double cpuMs = 0;
 };
 
@@ -32,9 +32,9 @@ struct Snapshot {
 };
 
 struct FrameRequest {
-  bool measure = false;                   // run queries (costs a little)
-  bool captureAll = false;                // a snapshot after every pass
-  std::optional<std::size_t> captureOnly; // a snapshot after the pass with this index only
+  bool measure = false;                    // run queries (costs a little)
+  bool captureAll = false;                 // a snapshot after every pass
+  std::optional<std::size_t> captureOnly;  // a snapshot after the pass with this index only
 };
 
 class PassRecorder {

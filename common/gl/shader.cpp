@@ -2,11 +2,10 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <glm/gtc/type_ptr.hpp>
 #include <regex>
 #include <sstream>
 #include <utility>
-
-#include <glm/gtc/type_ptr.hpp>
 
 #include "gl/errors.h"
 
@@ -44,7 +43,9 @@ GLuint compile(GLenum stage, const std::string& relative) {
 
 }  // namespace
 
-void setShaderDirFlag(std::optional<std::filesystem::path> dir) { shaderDirFlag = std::move(dir); }
+void setShaderDirFlag(std::optional<std::filesystem::path> dir) {
+  shaderDirFlag = std::move(dir);
+}
 
 std::vector<std::filesystem::path> shaderSearchPath() {
   if (shaderDirFlag) return {*shaderDirFlag};
@@ -119,7 +120,9 @@ Program& Program::operator=(Program&& other) noexcept {
   return *this;
 }
 
-void Program::use() const { glUseProgram(id_); }
+void Program::use() const {
+  glUseProgram(id_);
+}
 void Program::set(const char* name, const glm::mat4& m) const {
   use();
   glUniformMatrix4fv(glGetUniformLocation(id_, name), 1, GL_FALSE, glm::value_ptr(m));

@@ -1,11 +1,10 @@
 // GLSL programs loaded from shaders/, found at run time.
 #pragma once
 #include <filesystem>
+#include <glm/glm.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "gl/gl.h"
 

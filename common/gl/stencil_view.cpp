@@ -38,10 +38,18 @@ int drawNumber(Image& img, int x, int y, int number, int scale, Rgb c) {
 }  // namespace
 
 Rgb stencilColour(std::uint8_t value) {
-  static constexpr std::array<Rgb, 12> kPalette = {{{230, 25, 75},   {60, 180, 75},  {255, 225, 25},
-                                                    {0, 130, 200},   {245, 130, 48}, {145, 30, 180},
-                                                    {70, 240, 240},  {240, 50, 230}, {210, 245, 60},
-                                                    {250, 190, 212}, {0, 128, 128},  {170, 110, 40}}};
+  static constexpr std::array<Rgb, 12> kPalette = {{{230, 25, 75},
+                                                    {60, 180, 75},
+                                                    {255, 225, 25},
+                                                    {0, 130, 200},
+                                                    {245, 130, 48},
+                                                    {145, 30, 180},
+                                                    {70, 240, 240},
+                                                    {240, 50, 230},
+                                                    {210, 245, 60},
+                                                    {250, 190, 212},
+                                                    {0, 128, 128},
+                                                    {170, 110, 40}}};
   if (value == 0) return {0, 0, 0};
   if (value <= kPalette.size()) return kPalette[value - 1u];
   // 13..255: from dark violet to white, so large counts stay readable.
@@ -56,7 +64,9 @@ Image stencilRamp(const Image& stencil) {
 
   const int scale = 2, entryHeight = 7 * scale + 4, swatch = 5 * scale;
   // Lay the legend entries out first to know how tall the band is.
-  struct Entry { int value, x, y; };
+  struct Entry {
+    int value, x, y;
+  };
   std::vector<Entry> entries;
   int x = 4, y = 4;
   for (int v = 0; v < 256; ++v) {

@@ -3,9 +3,9 @@
 // inspector, an orbit camera and screenshots.
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
-#include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
 
 #include <algorithm>
 #include <cctype>
@@ -32,7 +32,9 @@ struct WindowState {
   int screenshots = 0;
 };
 
-WindowState& stateOf(GLFWwindow* w) { return *static_cast<WindowState*>(glfwGetWindowUserPointer(w)); }
+WindowState& stateOf(GLFWwindow* w) {
+  return *static_cast<WindowState*>(glfwGetWindowUserPointer(w));
+}
 
 void onKey(GLFWwindow* w, int key, int, int action, int mods) {
   if (action != GLFW_PRESS || ImGui::GetIO().WantCaptureKeyboard) return;
@@ -107,7 +109,8 @@ class Display {
   static void blitFit(int w, int h, int windowW, int windowH, bool flip) {
     const float scale = std::min(static_cast<float>(windowW) / static_cast<float>(w),
                                  static_cast<float>(windowH) / static_cast<float>(h));
-    const int dw = static_cast<int>(static_cast<float>(w) * scale), dh = static_cast<int>(static_cast<float>(h) * scale);
+    const int dw = static_cast<int>(static_cast<float>(w) * scale),
+              dh = static_cast<int>(static_cast<float>(h) * scale);
     const int x0 = (windowW - dw) / 2, y0 = (windowH - dh) / 2;
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
@@ -150,7 +153,8 @@ void drawPanel(WindowState& st, double fps) {
   ImGui::RadioButton("bit planes [Tab]", &view, 2);
   st.view = static_cast<View>(view);
   const int passCount = static_cast<int>(s.info.passes.size());
-  const char* passName = st.passStep < 0 ? "finished frame" : s.info.passes[static_cast<size_t>(st.passStep)].c_str();
+  const char* passName =
+      st.passStep < 0 ? "finished frame" : s.info.passes[static_cast<size_t>(st.passStep)].c_str();
   ImGui::SliderInt("after pass [P]", &st.passStep, -1, passCount - 1, passName);
   ImGui::Checkbox("pause [Space]", &st.paused);
   ImGui::SameLine();
@@ -197,12 +201,15 @@ int runWindow(Session& s) {
       // can be compared with a golden.
       const double now = glfwGetTime();
       fps = 0.9 * fps + 0.1 / std::max(now - last, 1e-6);
-      if (cl.frames) st.time = cl.time + frame / 60.0;
-      else if (!st.paused) st.time += now - last;
+      if (cl.frames)
+        st.time = cl.time + frame / 60.0;
+      else if (!st.paused)
+        st.time += now - last;
       last = now;
 
       const int step = std::min(st.passStep, static_cast<int>(s.info.passes.size()) - 1);
-      s.renderFrame(st.time, {.measure = false, .captureAll = false,
+      s.renderFrame(st.time, {.measure = false,
+                              .captureAll = false,
                               .captureOnly = step >= 0 ? std::optional<std::size_t>(step) : std::nullopt});
       const Snapshot* snap = nullptr;
       if (step >= 0)
@@ -214,7 +221,7 @@ int runWindow(Session& s) {
         Display::blitFit(s.framebuffer->width(), s.framebuffer->height(), w, h, false);
       } else {
         const Image stencil = snap ? snap->stencil : s.framebuffer->readStencil();
-        shown = st.view == View::Colour       ? snap->colour
+        shown = st.view == View::Colour        ? snap->colour
                 : st.view == View::StencilRamp ? stencilRamp(stencil)
                                                : stencilBitPlanes(stencil);
         display.show(shown, w, h);

@@ -42,11 +42,15 @@ LessonInfo lessonInfo() {
       {"masked-clear", 'M', "clear the stencil with write mask 0x02 instead of 0xFF", 1},
   };
   info.variants = {
-      {"keyhole", "a keyhole tagged in the stencil shows the day scene, elsewhere night", {{"demo", Keyhole}}},
-      {"stencil-off", "the same passes without the stencil test: night paints over everything",
+      {"keyhole",
+       "a keyhole tagged in the stencil shows the day scene, elsewhere night",
+       {{"demo", Keyhole}}},
+      {"stencil-off",
+       "the same passes without the stencil test: night paints over everything",
        {{"demo", Keyhole}, {"stencil", 0}}},
       {"ops", "one draw, three outcomes: stencil fail, depth fail, depth pass", {{"demo", Ops}}},
-      {"masked-clear", "glClear with write mask 0x02 clears bit 1 and keeps bit 0",
+      {"masked-clear",
+       "glClear with write mask 0x02 clears bit 1 and keeps bit 0",
        {{"demo", Clear}, {"masked-clear", 1}}},
       {"full-clear", "glClear with write mask 0xFF clears both tags", {{"demo", Clear}, {"masked-clear", 0}}},
   };
@@ -82,7 +86,8 @@ Mesh keyhole() {
   const float r = 0.25f, cy = 0.2f;
   const float a0 = std::asin(0.12f / r);  // where the slot meets the circle
   for (int i = 0; i <= 40; ++i) {
-    const float a = -glm::half_pi<float>() + a0 + (2.0f * glm::pi<float>() - 2.0f * a0) * static_cast<float>(i) / 40.0f;
+    const float a =
+        -glm::half_pi<float>() + a0 + (2.0f * glm::pi<float>() - 2.0f * a0) * static_cast<float>(i) / 40.0f;
     outline.push_back({r * std::cos(a), cy + r * std::sin(a)});
   }
   outline.push_back({-0.2f, -0.5f});
@@ -101,7 +106,8 @@ class StencilBasics final : public Lesson {
         keyhole_(keyhole()),
         disc_(disc(0.38f, 64)),
         // makePlane lies in y=0; turned to face +z it covers clip space [-1,1]^2.
-        screen_(transformed(makePlane(1.0f, 1), glm::rotate(glm::mat4(1), glm::half_pi<float>(), {1, 0, 0}))) {}
+        screen_(
+            transformed(makePlane(1.0f, 1), glm::rotate(glm::mat4(1), glm::half_pi<float>(), {1, 0, 0}))) {}
 
   void render(Frame& f) override {
     switch (f.option("demo")) {
@@ -133,13 +139,13 @@ class StencilBasics final : public Lesson {
 
     if (!f.on("stencil")) glDisable(GL_STENCIL_TEST);  // the artifact: nothing limits the passes
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);                     // the night pass redraws the same surfaces
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);     // from here on the stencil is only read
-    glStencilFunc(GL_EQUAL, 1, 0xFF);           // day only inside the keyhole
+    glDepthFunc(GL_LEQUAL);                  // the night pass redraws the same surfaces
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);  // from here on the stencil is only read
+    glStencilFunc(GL_EQUAL, 1, 0xFF);        // day only inside the keyhole
     drawScene(f, false);
     f.pass("day");
 
-    glStencilFunc(GL_NOTEQUAL, 1, 0xFF);        // night everywhere else
+    glStencilFunc(GL_NOTEQUAL, 1, 0xFF);  // night everywhere else
     drawScene(f, true);
     f.pass("night");
   }
@@ -173,9 +179,9 @@ class StencilBasics final : public Lesson {
     // passes inside the disc. Each outcome writes a different value:
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_EQUAL, 0x81, 0x01);
-    glStencilOp(GL_REPLACE,   // sfail: outside the disc (0) -> the reference, 0x81 = 129
-                GL_INCR,      // dpfail: in the disc, behind the occluder (1) -> 2
-                GL_INVERT);   // dppass: in the disc, visible (1) -> ~1 = 254
+    glStencilOp(GL_REPLACE,  // sfail: outside the disc (0) -> the reference, 0x81 = 129
+                GL_INCR,     // dpfail: in the disc, behind the occluder (1) -> 2
+                GL_INVERT);  // dppass: in the disc, visible (1) -> ~1 = 254
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the wall itself stays invisible
     drawLit(f, screen_, glm::scale(glm::translate(glm::mat4(1), {0.0f, 0.6f, 0.0f}), {1.6f, 1.0f, 1.0f}),
             {1, 1, 1});
@@ -187,8 +193,8 @@ class StencilBasics final : public Lesson {
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    const std::pair<GLint, glm::vec4> outcomes[] = {{0x81, {0.9f, 0.2f, 0.2f, 0.6f}},   // sfail: red
-                                                    {2, {0.95f, 0.8f, 0.1f, 0.6f}},     // dpfail: yellow
+    const std::pair<GLint, glm::vec4> outcomes[] = {{0x81, {0.9f, 0.2f, 0.2f, 0.6f}},    // sfail: red
+                                                    {2, {0.95f, 0.8f, 0.1f, 0.6f}},      // dpfail: yellow
                                                     {0xFE, {0.2f, 0.85f, 0.3f, 0.6f}}};  // dppass: green
     for (const auto& [value, colour] : outcomes) {
       glStencilFunc(GL_EQUAL, value, 0xFF);  // only the pixels holding this outcome
@@ -249,7 +255,8 @@ class StencilBasics final : public Lesson {
     drawLit(f, cube_, glm::translate(glm::mat4(1), {1.2f, 0.45f, 0.6f}), {0.3f, 0.5f, 0.9f}, night);
   }
 
-  void drawLit(const Frame& f, const GpuMesh& mesh, const glm::mat4& model, glm::vec3 colour, bool night = false) {
+  void drawLit(const Frame& f, const GpuMesh& mesh, const glm::mat4& model, glm::vec3 colour,
+               bool night = false) {
     // Night: the same scene, dimmer and shifted to blue, so the two renderings read apart.
     lit_.set("model", model);
     lit_.set("viewProjection", f.projection * f.view);
@@ -260,7 +267,8 @@ class StencilBasics final : public Lesson {
   }
 
   // A 2D shape in normalised device coordinates, corrected for the aspect ratio.
-  void drawScreenShape(const Frame& f, const GpuMesh& shape, glm::vec2 offset, float scale, glm::vec4 colour) {
+  void drawScreenShape(const Frame& f, const GpuMesh& shape, glm::vec2 offset, float scale,
+                       glm::vec4 colour) {
     const float aspect = static_cast<float>(f.size.x) / static_cast<float>(f.size.y);
     glm::mat4 m = glm::translate(glm::mat4(1), {offset, 0.0f});
     m = glm::scale(m, {scale / aspect, scale, 1.0f});
@@ -282,5 +290,6 @@ class StencilBasics final : public Lesson {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return runLesson(lessonInfo(), [] { return std::make_unique<StencilBasics>(); }, argc, argv);
+  return runLesson(
+      lessonInfo(), [] { return std::make_unique<StencilBasics>(); }, argc, argv);
 }
