@@ -52,10 +52,9 @@ Rgb stencilColour(std::uint8_t value) {
                                                     {170, 110, 40}}};
   if (value == 0) return {0, 0, 0};
   if (value <= kPalette.size()) return kPalette[value - 1u];
-  // 13..255: from dark violet to white, so large counts stay readable.
+  // 13..255: from dark violet to white. Red is the value itself, so no two values share a colour.
   const float t = static_cast<float>(value - 13) / (255.0f - 13.0f);
-  return {static_cast<std::uint8_t>(90 + 165 * t), static_cast<std::uint8_t>(40 + 215 * t),
-          static_cast<std::uint8_t>(140 + 115 * t)};
+  return {value, static_cast<std::uint8_t>(40 + 215 * t), static_cast<std::uint8_t>(140 + 115 * t)};
 }
 
 Image stencilRamp(const Image& stencil) {
