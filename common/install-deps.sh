@@ -9,6 +9,7 @@ packages=(
   python3-glad                       # generates the GL loader at configure time
   libglm-dev libstb-dev              # maths, PNG files
   libegl-dev libegl-mesa0 libgl1-mesa-dri  # EGL headless contexts (llvmpipe without a GPU)
+  libgl1 libglx-mesa0                # GLX for the window (GLFW loads libGL at run time)
   libglfw3-dev libimgui-dev          # the window and its panel
   libgtest-dev                       # unit tests
   xvfb xauth                         # the window test runs under a virtual display
