@@ -29,10 +29,32 @@ CommandLine parse(std::vector<std::string> args) {
 }  // namespace
 
 TEST(CommandLine, ParsesTheDocumentedFlags) {
-  const CommandLine cl = parse({"--headless", "--backend", "egl", "--size", "320x240", "--time", "1.5",
-                                "--frames", "3", "--variant", "off", "--set", "depth=3", "--out", "a.png",
-                                "--stencil-out", "s.png", "--stencil-view", "bits", "--passes", "p",
-                                "--stats", "--golden", "g", "--stencil-bits", "0"});
+  const CommandLine cl = parse({"--headless",
+                                "--backend",
+                                "egl",
+                                "--size",
+                                "320x240",
+                                "--time",
+                                "1.5",
+                                "--frames",
+                                "3",
+                                "--variant",
+                                "off",
+                                "--set",
+                                "depth=3",
+                                "--out",
+                                "a.png",
+                                "--stencil-out",
+                                "s.png",
+                                "--stencil-view",
+                                "bits",
+                                "--passes",
+                                "p",
+                                "--stats",
+                                "--golden",
+                                "g",
+                                "--stencil-bits",
+                                "0"});
   EXPECT_TRUE(cl.headless);
   EXPECT_EQ(cl.backend, Backend::Egl);
   EXPECT_EQ(cl.width, 320);
@@ -76,9 +98,9 @@ TEST(CommandLine, VariantSettingsThenSetOverrides) {
 
 TEST(CommandLine, HelpNamesEveryFlagAndVariant) {
   const std::string help = helpText(info(), "lesson");
-  for (const char* s : {"--headless", "--backend", "--size", "--time", "--frames", "--variant",
-                        "--list-variants", "--out", "--stencil-out", "--passes", "--stats", "--golden",
-                        "--update-golden", "depth [D]", "off"})
+  for (const char* s :
+       {"--headless", "--backend", "--size", "--time", "--frames", "--variant", "--list-variants", "--out",
+        "--stencil-out", "--passes", "--stats", "--golden", "--update-golden", "depth [D]", "off"})
     EXPECT_NE(help.find(s), std::string::npos) << s;
 }
 

@@ -1,0 +1,136 @@
+// The GL glue against a real context (OSMesa where built in, else EGL): the framebuffer's
+// verified stencil, the recorder's counts and snapshots, and GL errors failing a pass.
+// Without any context the tests are skipped, not passed.
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "geometry/shapes.h"
+#include "gl/context.h"
+#include "gl/debug.h"
+#include "gl/errors.h"
+#include "gl/framebuffer.h"
+#include "gl/gpu_mesh.h"
+#include "gl/recorder.h"
+#include "gl/shader.h"
+
+using namespace stencil;
+
+namespace {
+
+class Gl : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    try {
+      context = createContext(osmesaAvailable() ? Backend::Osmesa : Backend::Egl, 64, 64, "test");
+      enableDebugOutput(context->features());
+    } catch (const std::exception& e) {
+      reason = e.what();
+    }
+  }
+  static void TearDownTestSuite() { context.reset(); }
+  void SetUp() override {
+    if (!context) GTEST_SKIP() << "no GL context: " << reason;
+  }
+
+  // Covers clip space [-1,1]^2: every pixel of the framebuffer, once.
+  static Mesh fullScreen() {
+    return transformed(makePlane(1.0f, 1), glm::rotate(glm::mat4(1), glm::half_pi<float>(), {1, 0, 0}));
+  }
+
+  static inline std::unique_ptr<Context> context;
+  static inline std::string reason;
+};
+
+}  // namespace
+
+TEST_F(Gl, FramebufferHasVerifiedStencilBits) {
+  EXPECT_EQ(Framebuffer(32, 16).stencilBits(), 8);
+  EXPECT_EQ(Framebuffer(32, 16, 0).stencilBits(), 0);
+}
+
+TEST_F(Gl, StencilReadsBackExactlyAndClearHonoursTheWriteMask) {
+  Framebuffer fb(7, 5);  // odd sizes catch row-alignment mistakes
+  fb.bind();
+  glClearStencil(0xA5);
+  glClear(GL_STENCIL_BUFFER_BIT);
+  glStencilMask(0x0F);
+  glClearStencil(0x00);
+  glClear(GL_STENCIL_BUFFER_BIT);  // clears the low nibble only
+  glStencilMask(0xFF);
+  const Image s = fb.readStencil();
+  ASSERT_EQ(s.pixels.size(), 35u);
+  for (std::uint8_t v : s.pixels) EXPECT_EQ(v, 0xA0);
+  checkGlErrors("in the test");
+}
+
+TEST_F(Gl, ReadbackIsTopRowFirst) {
+  Framebuffer fb(4, 4);
+  fb.bind();
+  glClearColor(0, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(0, 3, 4, 1);  // GL's top row (y measured from the bottom)
+  glClearColor(1, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+  const Image c = fb.readColour();
+  EXPECT_EQ(c.at(0, 0)[0], 255);  // image row 0 is the top
+  EXPECT_EQ(c.at(0, 3)[0], 0);
+}
+
+TEST_F(Gl, RecorderCountsDrawsTrianglesAndFragments) {
+  Framebuffer fb(64, 32);
+  Program flat("common/flat.vert", "common/flat.frag");
+  GpuMesh quad(fullScreen());
+  PassRecorder recorder({"first", "second"}, fb, context->features());
+  fb.bind();
+  recorder.beginFrame({.measure = true, .captureAll = true, .captureOnly = {}});
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  flat.set("transform", glm::mat4(1));
+  flat.set("colour", glm::vec4(1));
+  quad.draw();
+  quad.draw();
+  recorder.pass("first");
+  recorder.pass("second");  // an empty pass
+  recorder.endFrame();
+
+  const auto& stats = recorder.passStats();
+  ASSERT_EQ(stats.size(), 2u);
+  EXPECT_EQ(stats[0].name, "first");
+  EXPECT_EQ(stats[0].drawCalls, 2u);
+  EXPECT_EQ(stats[0].triangles, 4u);
+  ASSERT_TRUE(stats[0].samplesPassed.has_value());
+  EXPECT_EQ(*stats[0].samplesPassed, 2u * 64 * 32);  // two full-screen quads, no depth test
+  EXPECT_EQ(stats[1].drawCalls, 0u);
+  EXPECT_EQ(stats[1].samplesPassed, 0u);
+  EXPECT_EQ(recorder.snapshots().size(), 2u);
+  EXPECT_EQ(recorder.snapshots()[0].colour.at(10, 10)[0], 255);
+}
+
+TEST_F(Gl, AGlErrorFailsThePassItHappenedIn) {
+  Framebuffer fb(8, 8);
+  PassRecorder recorder({"broken"}, fb, context->features());
+  fb.bind();
+  recorder.beginFrame({});
+  glStencilFunc(0x1234, 0, 0xFF);  // GL_INVALID_ENUM
+  try {
+    recorder.pass("broken");
+    FAIL() << "the GL error went unnoticed";
+  } catch (const GlError& e) {
+    EXPECT_NE(std::string(e.what()).find("in pass 'broken'"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(Gl, UndeclaredPassAndDrawsAfterTheLastPassAreBugs) {
+  Framebuffer fb(8, 8);
+  Program flat("common/flat.vert", "common/flat.frag");
+  GpuMesh quad(fullScreen());
+  PassRecorder recorder({"only"}, fb, context->features());
+  fb.bind();
+  recorder.beginFrame({});
+  EXPECT_THROW(recorder.pass("typo"), std::logic_error);
+  recorder.pass("only");
+  quad.draw();
+  EXPECT_THROW(recorder.endFrame(), std::logic_error);
+}
