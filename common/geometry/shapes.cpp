@@ -102,6 +102,15 @@ Mesh makePlane(float halfSize, int divisions) {
   return mesh;
 }
 
+Mesh makeScreenQuad() {
+  Mesh mesh;
+  for (glm::vec2 p : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)})
+    addVertex(mesh, {p, 0.0f}, {0.0f, 0.0f, 1.0f});
+  addTriangle(mesh, 0, 1, 2);  // counter-clockwise seen from +z
+  addTriangle(mesh, 0, 2, 3);
+  return mesh;
+}
+
 Mesh makeCube(float halfExtent) {
   requirePositive("makeCube", "halfExtent", halfExtent);
   struct Face {

@@ -17,6 +17,10 @@ namespace stencil {
 // (divisions+1)^2 vertices, 2*divisions^2 triangles. divisions >= 1.
 Mesh makePlane(float halfSize, int divisions = 1);
 
+// The square [-1,1]^2 in the z=0 plane, facing +z: drawn with an identity transform it
+// covers the whole viewport (full-screen passes that read the stencil).
+Mesh makeScreenQuad();
+
 // Axis-aligned cube. 24 vertices (4 per face so each face keeps its own
 // normal), 12 triangles; 8 vertices after welding.
 Mesh makeCube(float halfExtent);

@@ -58,13 +58,17 @@ void Framebuffer::bind() const {
   glViewport(0, 0, width_, height_);
 }
 
-Image Framebuffer::readColour() const {
-  Image image(width_, height_, 4);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+Image readColourPixels(GLuint framebuffer, int width, int height) {
+  Image image(width, height, 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
   flipRows(image);
   return image;
+}
+
+Image Framebuffer::readColour() const {
+  return readColourPixels(fbo_, width_, height_);
 }
 
 Image Framebuffer::readStencil() const {

@@ -7,6 +7,9 @@
 
 namespace stencil {
 
+// Reads the colour of any framebuffer (0: the window's), RGBA, top row first.
+Image readColourPixels(GLuint framebuffer, int width, int height);
+
 class Framebuffer {
  public:
   // stencilBits is 8 for lessons; 0 builds one without stencil (to test the check).

@@ -194,7 +194,10 @@ int runWindow(Session& s) {
       glfwPollEvents();
       int w = 0, h = 0;
       glfwGetFramebufferSize(window, &w, &h);
-      if (w == 0 || h == 0) continue;  // minimised
+      if (w == 0 || h == 0) {  // minimised: nothing to draw until it comes back
+        glfwWaitEvents();
+        continue;
+      }
       if (w != s.framebuffer->width() || h != s.framebuffer->height()) s.resize(w, h);
 
       // With --frames the window steps time exactly like a headless run, so its pixels
@@ -230,13 +233,7 @@ int runWindow(Session& s) {
       const bool lastFrame = cl.frames && frame + 1 >= *cl.frames;
       if (st.screenshot || lastFrame) {
         // What the window shows, without the panel: read back from the window itself.
-        Image screen(w, h, 4);
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-        glReadBuffer(GL_BACK);
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, screen.pixels.data());
-        for (int y = 0; y < h / 2; ++y)
-          std::swap_ranges(screen.at(0, y), screen.at(0, y) + w * 4, screen.at(0, h - 1 - y));
+        const Image screen = readColourPixels(0, w, h);
         if (st.screenshot) {
           char name[128];
           std::snprintf(name, sizeof name, "screenshot-%s-%03d.png", s.info.id.c_str(), st.screenshots++);

@@ -105,9 +105,7 @@ class StencilBasics final : public Lesson {
         cube_(makeCube(0.45f)),
         keyhole_(keyhole()),
         disc_(disc(0.38f, 64)),
-        // makePlane lies in y=0; turned to face +z it covers clip space [-1,1]^2.
-        screen_(
-            transformed(makePlane(1.0f, 1), glm::rotate(glm::mat4(1), glm::half_pi<float>(), {1, 0, 0}))) {}
+        screen_(makeScreenQuad()) {}
 
   void render(Frame& f) override {
     switch (f.option("demo")) {

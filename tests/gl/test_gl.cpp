@@ -3,8 +3,6 @@
 // Without any context the tests are skipped, not passed.
 #include <gtest/gtest.h>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include "geometry/shapes.h"
 #include "gl/context.h"
 #include "gl/debug.h"
@@ -31,11 +29,6 @@ class Gl : public ::testing::Test {
   static void TearDownTestSuite() { context.reset(); }
   void SetUp() override {
     if (!context) GTEST_SKIP() << "no GL context: " << reason;
-  }
-
-  // Covers clip space [-1,1]^2: every pixel of the framebuffer, once.
-  static Mesh fullScreen() {
-    return transformed(makePlane(1.0f, 1), glm::rotate(glm::mat4(1), glm::half_pi<float>(), {1, 0, 0}));
   }
 
   static inline std::unique_ptr<Context> context;
@@ -82,7 +75,7 @@ TEST_F(Gl, ReadbackIsTopRowFirst) {
 TEST_F(Gl, RecorderCountsDrawsTrianglesAndFragments) {
   Framebuffer fb(64, 32);
   Program flat("common/flat.vert", "common/flat.frag");
-  GpuMesh quad(fullScreen());
+  GpuMesh quad(makeScreenQuad());
   PassRecorder recorder({"first", "second"}, fb, context->features());
   fb.bind();
   recorder.beginFrame({.measure = true, .captureAll = true, .captureOnly = {}});
@@ -125,7 +118,7 @@ TEST_F(Gl, AGlErrorFailsThePassItHappenedIn) {
 TEST_F(Gl, UndeclaredPassAndDrawsAfterTheLastPassAreBugs) {
   Framebuffer fb(8, 8);
   Program flat("common/flat.vert", "common/flat.frag");
-  GpuMesh quad(fullScreen());
+  GpuMesh quad(makeScreenQuad());
   PassRecorder recorder({"only"}, fb, context->features());
   fb.bind();
   recorder.beginFrame({});

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "geometry/adjacency.h"
+#include "geometry/bounds.h"
 #include "geometry/mesh.h"
 #include "geometry/shapes.h"
 #include "geometry/weld.h"
@@ -519,3 +520,24 @@ TEST(ShapeParameters, MessageNamesTheParameter) {
 }
 
 }  // namespace
+
+TEST(ScreenQuad, CoversClipSpaceFacingPlusZ) {
+  using namespace stencil;
+  const Mesh quad = makeScreenQuad();
+  ASSERT_EQ(quad.positions.size(), 4u);
+  ASSERT_EQ(quad.triangleCount(), 2u);
+  const Aabb box = boundsOf(quad.positions);
+  EXPECT_EQ(box.min, glm::vec3(-1, -1, 0));
+  EXPECT_EQ(box.max, glm::vec3(1, 1, 0));
+  for (glm::vec3 n : quad.normals) EXPECT_EQ(n, glm::vec3(0, 0, 1));
+  // Counter-clockwise seen from +z, and the two triangles tile the square: areas add to 4.
+  float area = 0;
+  for (std::size_t t = 0; t < 2; ++t) {
+    const glm::vec3 a = quad.positions[quad.indices[3 * t]], b = quad.positions[quad.indices[3 * t + 1]],
+                    c = quad.positions[quad.indices[3 * t + 2]];
+    const float z = glm::cross(b - a, c - a).z;
+    EXPECT_GT(z, 0.0f);
+    area += z / 2;
+  }
+  EXPECT_FLOAT_EQ(area, 4.0f);
+}
