@@ -64,6 +64,9 @@ Image readColourPixels(GLuint framebuffer, int width, int height) {
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
   flipRows(image);
+  // Pictures show what a screen shows, and a screen does not show alpha: blending leaves
+  // destination alpha below 1, which image viewers would composite over their background.
+  for (size_t i = 3; i < image.pixels.size(); i += 4) image.pixels[i] = 255;
   return image;
 }
 

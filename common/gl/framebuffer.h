@@ -7,7 +7,7 @@
 
 namespace stencil {
 
-// Reads the colour of any framebuffer (0: the window's), RGBA, top row first.
+// Reads the colour of any framebuffer (0: the window's), RGBA, top row first, opaque.
 Image readColourPixels(GLuint framebuffer, int width, int height);
 
 class Framebuffer {
@@ -24,7 +24,7 @@ class Framebuffer {
   GLuint id() const { return fbo_; }
   int stencilBits() const { return stencilBits_; }  // as queried from GL
 
-  Image readColour() const;   // RGBA, top row first
+  Image readColour() const;   // RGBA, top row first, alpha 255
   Image readStencil() const;  // one byte per pixel, top row first
 
  private:
