@@ -1,8 +1,6 @@
 #include "gl/context.h"
 
 #include <cstdlib>
-#include <cstring>
-#include <string_view>
 
 #include "gl/errors.h"
 #include "gl/gl.h"

@@ -3,7 +3,6 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
-#include <cstring>
 #include <string>
 #include <vector>
 

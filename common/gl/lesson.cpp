@@ -81,8 +81,7 @@ Session::Session(const LessonInfo& lessonInfo, const LessonFactory& factory, con
   context = createContext(backend, cl.width, cl.height, info.id + ": " + info.title);
   enableDebugOutput(context->features());
   checkNeeds(info.needs, "lesson " + info.id);
-  setVariant(cl.variant.empty() ? info.variants.front().name : cl.variant);
-  options = optionsFor(info, variant, cl.settings);
+  setVariant(cl.variant.empty() ? info.variants.front().name : cl.variant, cl.settings);
   makeFramebuffer(cl.width, cl.height);
   lesson = factory();
   checkGlErrors("while the lesson set up");
@@ -95,10 +94,10 @@ void Session::checkNeeds(const std::vector<Feature>& needs, const std::string& w
                        " does not offer");
 }
 
-void Session::setVariant(const std::string& name) {
+void Session::setVariant(const std::string& name, const std::vector<std::pair<std::string, int>>& settings) {
   checkNeeds(findVariant(info, name).needs, "variant '" + name + "'");
   variant = name;
-  options = optionsFor(info, variant, {});
+  options = optionsFor(info, variant, settings);
 }
 
 void Session::makeFramebuffer(int width, int height) {

@@ -19,8 +19,9 @@ class Session {
   // then constructs the lesson.
   Session(const LessonInfo&, const LessonFactory&, const CommandLine&, Backend);
 
-  void setVariant(const std::string& name);  // resets the options to the variant's
-  void resize(int width, int height);        // a new framebuffer (the window was resized)
+  // Resets the options to the variant's, then applies `settings` (--set) on top.
+  void setVariant(const std::string& name, const std::vector<std::pair<std::string, int>>& settings = {});
+  void resize(int width, int height);  // a new framebuffer (the window was resized)
   // Renders one frame at `time` into the framebuffer; the recorder holds its passes.
   void renderFrame(double time, FrameRequest);
 
