@@ -1,0 +1,28 @@
+#version 330 core
+// Ambient plus one light: diffuse and a Blinn-Phong highlight, fading with distance.
+// Drawing with lightColour = 0 gives the ambient term alone; with ambient = 0, the light's
+// contribution alone, to be added onto what is there.
+in vec3 worldPosition;
+in vec3 worldNormal;
+
+uniform vec3 colour;       // albedo
+uniform vec3 ambient;      // ambient light
+uniform vec4 light;        // w = 1 a point, w = 0 a direction towards the light
+uniform vec3 lightColour;  // 0 turns the light off
+uniform vec3 eye;
+uniform float shininess;
+
+out vec4 fragColour;
+
+void main() {
+  vec3 n = normalize(worldNormal);
+  vec3 toLight = light.xyz - light.w * worldPosition;
+  float distance = length(toLight);
+  toLight /= distance;
+  float falloff = light.w == 0.0 ? 1.0 : 1.0 / (1.0 + 0.04 * distance * distance);
+  float diffuse = max(dot(n, toLight), 0.0);
+  vec3 halfway = normalize(toLight + normalize(eye - worldPosition));
+  float highlight = diffuse > 0.0 ? pow(max(dot(n, halfway), 0.0), shininess) : 0.0;
+  vec3 lit = lightColour * falloff * (colour * diffuse + vec3(0.6 * highlight));
+  fragColour = vec4(colour * ambient + lit, 1.0);
+}

@@ -1,0 +1,19 @@
+#version 330 core
+// World position and normal for per-pixel lighting. The light passes of lesson 05 add onto
+// the ambient pass with depth test EQUAL, so every pass must produce the same depths.
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+
+uniform mat4 model;
+uniform mat4 viewProjection;
+
+out vec3 worldPosition;
+out vec3 worldNormal;
+invariant gl_Position;
+
+void main() {
+  vec4 world = model * vec4(position, 1.0);
+  worldPosition = world.xyz;
+  worldNormal = mat3(model) * normal;  // rigid model matrices only
+  gl_Position = viewProjection * world;
+}
