@@ -102,6 +102,25 @@ Mesh makePlane(float halfSize, int divisions) {
   return mesh;
 }
 
+Mesh makeSquareRing(float outerHalfSize, float innerHalfSize) {
+  requirePositive("makeSquareRing", "outerHalfSize", outerHalfSize);
+  requirePositive("makeSquareRing", "innerHalfSize", innerHalfSize);
+  if (!(innerHalfSize < outerHalfSize))
+    throw std::invalid_argument("makeSquareRing: innerHalfSize must be less than outerHalfSize");
+  Mesh mesh;
+  reserve(mesh, 8, 8);
+  // Corners counter-clockwise seen from +y (from +x towards -z), outer ring then inner.
+  const glm::vec2 corners[4] = {{1, 1}, {1, -1}, {-1, -1}, {-1, 1}};
+  for (const float h : {outerHalfSize, innerHalfSize})
+    for (const glm::vec2 c : corners) addVertex(mesh, {h * c.x, 0.0f, h * c.y}, {0.0f, 1.0f, 0.0f});
+  for (std::uint32_t i = 0; i < 4; ++i) {  // one trapezoid per side, two triangles each
+    const std::uint32_t j = (i + 1) % 4;
+    addTriangle(mesh, i, j, 4 + j);
+    addTriangle(mesh, i, 4 + j, 4 + i);
+  }
+  return mesh;
+}
+
 Mesh makeScreenQuad() {
   Mesh mesh;
   for (glm::vec2 p : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)})

@@ -17,6 +17,10 @@ namespace stencil {
 // (divisions+1)^2 vertices, 2*divisions^2 triangles. divisions >= 1.
 Mesh makePlane(float halfSize, int divisions = 1);
 
+// Square with a square hole, both centred, in the y = 0 plane, normal +y: a ground with a
+// hole in it. 0 < innerHalfSize < outerHalfSize. 8 vertices, 8 triangles.
+Mesh makeSquareRing(float outerHalfSize, float innerHalfSize);
+
 // The square [-1,1]^2 in the z=0 plane, facing +z: drawn with an identity transform it
 // covers the whole viewport (full-screen passes that read the stencil).
 Mesh makeScreenQuad();

@@ -132,6 +132,8 @@ void Session::renderFrame(double time, FrameRequest request) {
               context->features());
   lesson->render(frame);
   recorder->endFrame();
+  viewProjection = frame.projection * frame.view;
+  if (commandLine.oracle) shadowCheck = lesson->shadowCheck(frame);
 }
 
 // ---- headless run -----------------------------------------------------------------------
@@ -200,6 +202,26 @@ std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
   return out.str();
 }
 
+// --oracle: the stencil's lit receivers against a CPU ray cast of the scene the lesson drew.
+bool checkShadows(const Session& s, const Image& stencil) {
+  if (!s.shadowCheck)
+    throw UsageError(s.info.id + " makes no shadow claim in variant '" + s.variant +
+                     "' to check with --oracle");
+  const ShadowCheck& check = *s.shadowCheck;
+  const glm::ivec2 size{stencil.width, stencil.height};
+  const std::vector<PixelClass> oracle = classifyPixels(check.objects, check.light, s.viewProjection, size);
+  std::vector<bool> lit(stencil.pixels.size());
+  for (std::size_t i = 0; i < lit.size(); ++i) lit[i] = check.litInStencil(stencil.pixels[i]);
+  const OracleReport r = compareWithOracle(oracle, lit, size);
+  Image picture(size.x, size.y, 4);
+  picture.pixels = oraclePicture(oracle, lit, size);
+  writePng(*s.commandLine.oracle, picture);
+  std::cerr << (r.passed() ? "oracle ok: " : "oracle FAILED: ") << r.receiverPixels << " receiver pixels, "
+            << r.shadowedPixels << " shadowed; " << r.disagreements << " disagree, " << r.onEdges
+            << " of them on edges (picture: " << s.commandLine.oracle->string() << ")\n";
+  return r.passed();
+}
+
 std::filesystem::path rawPathBeside(const std::filesystem::path& picture) {
   std::filesystem::path raw = picture;
   raw.replace_extension(".raw.png");
@@ -247,6 +269,7 @@ int finishRun(Session& s, const Image& colour, const Image& stencil, const std::
     }
   }
   if (cl.stats && !frameMs.empty()) std::cout << statsJson(s, frameMs);
+  if (cl.oracle && !checkShadows(s, stencil)) return 1;
   if (cl.golden) {
     if (cl.updateGolden) {
       writeGolden(colour, stencil, *cl.golden, s.variant);

@@ -6,11 +6,13 @@
 #include <functional>
 #include <glm/glm.hpp>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "geometry/shadow_oracle.h"
 #include "gl/context.h"
 
 namespace stencil {
@@ -85,11 +87,23 @@ class Frame {
   PassRecorder& recorder_;
 };
 
+// What --oracle needs to check a lesson's shadows against a CPU ray cast of the same scene
+// (geometry/shadow_oracle.h): the scene as the lesson drew it in that frame, the light, and
+// how to read the frame's final stencil value as "a lit receiver".
+struct ShadowCheck {
+  std::vector<OracleObject> objects;
+  glm::vec4 light;
+  std::function<bool(std::uint8_t stencil)> litInStencil;
+};
+
 class Lesson {
  public:
   virtual ~Lesson() = default;
   // Called with the lesson's framebuffer bound, cleared to nothing: the lesson clears.
   virtual void render(Frame&) = 0;
+  // The frame's shadows as an oracle can check them; nothing where the current options make
+  // no shadow claim (a variant that shows an artifact, say).
+  virtual std::optional<ShadowCheck> shadowCheck(const Frame&) const { return std::nullopt; }
 };
 
 // The lesson's constructor runs with a current context (it creates its GL objects).

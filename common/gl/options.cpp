@@ -98,6 +98,8 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
       cl.stats = true;
     else if (flag == "--golden")
       cl.golden = value();
+    else if (flag == "--oracle")
+      cl.oracle = value();
     else if (flag == "--update-golden")
       cl.updateGolden = true;
     else if (flag == "--artifacts")
@@ -155,6 +157,9 @@ std::string helpText(const LessonInfo& info, const std::string& program) {
       << "                           passed, primitives, GPU and CPU time (null where the driver\n"
       << "                           has no query for it)\n"
       << "  --quiet                  no context line on stderr\n\n"
+      << "  --oracle FILE.png        check the shadows against a CPU ray cast of the same scene,\n"
+      << "                           pixel by pixel; exit 1 if they differ off the edges; the\n"
+      << "                           comparison as a picture (red: wrong, yellow: on an edge)\n\n"
       << "Golden tests\n"
       << "  --golden DIR             compare with DIR/VARIANT.png and DIR/VARIANT.stencil.png;\n"
       << "                           exit 1 on a difference, 77 when no context can be made\n"

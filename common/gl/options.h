@@ -21,8 +21,9 @@ struct CommandLine {
   std::string variant;        // empty: the lesson's first
   std::vector<std::pair<std::string, int>> settings;  // --set NAME=VALUE
   std::optional<std::filesystem::path> out, stencilOut, passesDir, golden, artifacts, shaderDir;
-  int stencilBits = 8;            // --stencil-bits 0 builds a framebuffer without stencil
-  bool stencilBitPlanes = false;  // --stencil-view bits
+  std::optional<std::filesystem::path> oracle;  // --oracle FILE.png: check the shadows by ray casting
+  int stencilBits = 8;                          // --stencil-bits 0 builds a framebuffer without stencil
+  bool stencilBitPlanes = false;                // --stencil-view bits
   bool stats = false;
   bool updateGolden = false;
   bool quiet = false;

@@ -1,6 +1,7 @@
 // Everything one run of a lesson holds, shared by the headless and the window paths.
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,8 @@ class Session {
   std::string variant;
   std::vector<Option> options;
   OrbitCamera camera;
+  std::optional<ShadowCheck> shadowCheck;  // the last frame's, when --oracle asks for it
+  glm::mat4 viewProjection{1.0f};          // the last frame's
 
  private:
   void checkNeeds(const std::vector<Feature>&, const std::string& who) const;

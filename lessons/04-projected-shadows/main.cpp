@@ -13,6 +13,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "geometry/bounds.h"
 #include "geometry/planar.h"
 #include "geometry/shapes.h"
 #include "gl/gpu_mesh.h"
@@ -36,6 +37,11 @@ LessonInfo lessonInfo() {
       {"low-light", 'L', "a low light to the side: the shadow runs past the ground's edge", 0},
       {"directional", 'D', "a directional light (w = 0) instead of a point light", 0},
       {"shadow", 'H', "draw the shadow pass at all (off: the reference the tests compare with)", 1},
+      {"clip", 'C', "keep only the caster's part between the ground and the light", 1},
+      {"case", 'K',
+       "a hard case: 1 caster partly buried, 2 light below the ground, 3 light level with the caster's\n"
+       "      top, 4 grazing directional light, 5 ground with a hole",
+       0, 5},
   };
   info.variants = {
       {"stencil", "Kilgard's recipe: one darkening per pixel, only on the ground", {}},
@@ -52,6 +58,14 @@ LessonInfo lessonInfo() {
        "the same low light with the stencil: the shadow ends at the edge",
        {{"low-light", 1}}},
       {"directional", "a directional light: parallel projection, same recipe", {{"directional", 1}}},
+      {"buried", "the torus partly below the ground: the buried part casts nothing", {{"case", 1}}},
+      {"buried-unclipped",
+       "the same without clipping: the buried part projects a false shadow",
+       {{"case", 1}, {"clip", 0}}},
+      {"light-below", "the light below the ground: no shadow on its top side", {{"case", 2}}},
+      {"light-at-top", "a light level with the torus top: the shadow runs to infinity", {{"case", 3}}},
+      {"grazing", "a directional light 10 degrees above the horizon: a very long shadow", {{"case", 4}}},
+      {"hole", "a ground with a hole: no shadow in the hole", {{"case", 5}}},
   };
   info.passes = {"scene", "shadow"};
   info.camera.distance = 7.5f;
@@ -68,9 +82,15 @@ class ProjectedShadows final : public Lesson {
   ProjectedShadows()
       : lit_("common/lit.vert", "common/lit.frag"),
         flat_("common/flat.vert", "common/flat.frag"),
-        ground_(makePlane(2.0f, 1)),
-        torus_(makeTorus(0.7f, 0.25f, 48, 24)),
-        marker_(makeSphere(0.08f, 16, 8)) {}
+        shadow_("common/projected_shadow.vert", "common/flat.frag"),
+        groundMesh_(makePlane(2.0f, 1)),
+        holedGroundMesh_(makeSquareRing(2.0f, 0.6f)),
+        torusMesh_(makeTorus(0.7f, 0.25f, 48, 24)),
+        markerMesh_(makeSphere(0.08f, 16, 8)),
+        ground_(groundMesh_),
+        holedGround_(holedGroundMesh_),
+        torus_(torusMesh_),
+        marker_(markerMesh_) {}
 
   void render(Frame& f) override {
     const glm::vec4 light = lightAt(f);
@@ -91,7 +111,7 @@ class ProjectedShadows final : public Lesson {
       glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);   // the ground is visible gets the tag
     }
     glDisable(GL_CULL_FACE);  // the ground is one-sided but may be seen from below
-    drawLit(f, ground_, glm::mat4(1), {0.75f, 0.75f, 0.7f}, light);
+    drawLit(f, f.option("case") == kHole ? holedGround_ : ground_, glm::mat4(1), {0.75f, 0.75f, 0.7f}, light);
     f.pass("scene");
 
     // ---- the shadow: the caster flattened onto the ground ----------------------------------
@@ -113,9 +133,25 @@ class ProjectedShadows final : public Lesson {
         glPolygonOffset(-1.0f, -1.0f);  // pull the shadow towards the eye, out of the ground
       }
     }
-    flat_.set("transform", f.projection * f.view * planarShadowMatrix(groundPlane, light) * caster);
-    flat_.set("colour", glm::vec4(0.0f, 0.0f, 0.0f, kShadowAlpha));
+    const glm::mat4 shadowMatrix = planarShadowMatrix(groundPlane, light);
+    if (f.on("clip")) {
+      glEnable(GL_CLIP_DISTANCE0);  // the shader keeps the caster's part on the light's side
+      glEnable(GL_CLIP_DISTANCE1);  // of the ground and nearer to it than the light
+      shadow_.set("model", caster);
+      shadow_.set("shadowMatrix", shadowMatrix);
+      shadow_.set("viewProjection", f.projection * f.view);
+      shadow_.set("receiver", groundPlane);
+      shadow_.set("light", light);
+      shadow_.set("colour", glm::vec4(0.0f, 0.0f, 0.0f, kShadowAlpha));
+    } else {
+      // A shader that writes no clip distances: some drivers (Mesa 22's llvmpipe) clip with
+      // written distances even while GL_CLIP_DISTANCEi is disabled.
+      flat_.set("transform", f.projection * f.view * shadowMatrix * caster);
+      flat_.set("colour", glm::vec4(0.0f, 0.0f, 0.0f, kShadowAlpha));
+    }
     torus_.draw();
+    glDisable(GL_CLIP_DISTANCE0);
+    glDisable(GL_CLIP_DISTANCE1);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
@@ -123,10 +159,41 @@ class ProjectedShadows final : public Lesson {
     f.pass("shadow");
   }
 
+  // With the stencil, the visible ground keeps its tag exactly where the light reaches it.
+  std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
+    if (!f.on("stencil") || !f.on("shadow")) return std::nullopt;
+    const glm::vec4 light = lightAt(f);
+    ShadowCheck check{
+        {{&torusMesh_, casterModel(f), true, false},
+         {f.option("case") == kHole ? &holedGroundMesh_ : &groundMesh_, glm::mat4(1), false, true}},
+        light,
+        [](std::uint8_t s) { return s == kGroundTag; }};
+    if (light.w != 0.0f)
+      check.objects.push_back({&markerMesh_, glm::translate(glm::mat4(1), glm::vec3(light)), false, false});
+    return check;
+  }
+
  private:
-  // A point light circling above (w = 1), or a direction (w = 0).
-  static glm::vec4 lightAt(const Frame& f) {
+  static constexpr int kBuried = 1, kLightBelow = 2, kLightAtTop = 3, kGrazing = 4, kHole = 5;
+
+  // A point light circling above (w = 1), or a direction (w = 0); the hard cases move it.
+  glm::vec4 lightAt(const Frame& f) const {
     const float a = 0.4f * static_cast<float>(f.time);
+    switch (f.option("case")) {
+      case kBuried:
+        // Low and on the camera's side: a false shadow of the buried part would lie in view.
+        return {3.0f * std::cos(a + 0.65f), 1.6f, 3.0f * std::sin(a + 0.65f), 1.0f};
+      case kLightBelow: return {1.2f * std::cos(a), -1.5f, 1.2f * std::sin(a), 1.0f};
+      case kLightAtTop: {
+        const float top = boundsOf(transformed(torusMesh_, casterModel(f)).positions).max.y;
+        return {1.8f * std::cos(a), top, 1.8f * std::sin(a), 1.0f};
+      }
+      case kGrazing: {
+        const float e = glm::radians(10.0f);
+        return {std::cos(e) * std::cos(a), std::sin(e), std::cos(e) * std::sin(a), 0.0f};
+      }
+      default: break;
+    }
     if (f.on("directional"))
       return {glm::normalize(glm::vec3(0.6f * std::cos(a), 1.0f, 0.6f * std::sin(a))), 0.0f};
     if (f.on("low-light"))
@@ -137,7 +204,9 @@ class ProjectedShadows final : public Lesson {
   // The torus tumbles above the ground, so from the light it often overlaps itself.
   static glm::mat4 casterModel(const Frame& f) {
     const float t = static_cast<float>(f.time);
-    glm::mat4 m = glm::translate(glm::mat4(1), {0.0f, 1.2f, 0.0f});
+    // Buried: its lower part under the ground. Grazing: low, so the long shadow starts on the ground.
+    const float height = f.option("case") == kBuried ? 0.35f : f.option("case") == kGrazing ? 0.9f : 1.2f;
+    glm::mat4 m = glm::translate(glm::mat4(1), {0.0f, height, 0.0f});
     m = glm::rotate(m, 0.5f * t, {0, 1, 0});
     return glm::rotate(m, 1.2f + 0.3f * t, {1, 0, 0.3f});
   }
@@ -160,8 +229,9 @@ class ProjectedShadows final : public Lesson {
     marker_.draw();
   }
 
-  Program lit_, flat_;
-  GpuMesh ground_, torus_, marker_;
+  Program lit_, flat_, shadow_;
+  Mesh groundMesh_, holedGroundMesh_, torusMesh_, markerMesh_;  // kept for the oracle's ray cast
+  GpuMesh ground_, holedGround_, torus_, marker_;
 };
 
 }  // namespace

@@ -79,9 +79,12 @@ class LightBlocking final : public Lesson {
       : light_("05-light-blocking/light.vert", "05-light-blocking/light.frag"),
         shadow_("common/projected_shadow.vert", "common/flat.frag"),
         flat_("common/flat.vert", "common/flat.frag"),
-        panel_(makePlane(kRoom, 1)),
-        torus_(makeTorus(0.7f, 0.25f, 48, 24)),
-        marker_(makeSphere(0.08f, 16, 8)) {
+        panelMesh_(makePlane(kRoom, 1)),
+        torusMesh_(makeTorus(0.7f, 0.25f, 48, 24)),
+        markerMesh_(makeSphere(0.08f, 16, 8)),
+        panel_(panelMesh_),
+        torus_(torusMesh_),
+        marker_(markerMesh_) {
     // The ground, a back wall (z = -kRoom) and a left wall (x = -kRoom), from one square.
     const glm::mat4 back = glm::rotate(glm::translate(glm::mat4(1), {0, kRoom, -kRoom}), glm::radians(90.0f),
                                        glm::vec3(1, 0, 0));
@@ -108,6 +111,20 @@ class LightBlocking final : public Lesson {
       renderOneLight(f);
     glDisable(GL_CLIP_DISTANCE0);
     glDisable(GL_CLIP_DISTANCE1);
+  }
+
+  // One light on the ground: its visible pixels keep their tag exactly where the light
+  // reaches them, in both forms (INCR marks the shadow, the blended shadow ZEROes it).
+  std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
+    if (f.on("multi") || !f.on("shadow")) return std::nullopt;
+    const Light light = lightsAt(f)[0];
+    const GLint tag = surfaces_[0].tag;
+    return ShadowCheck{
+        {{&torusMesh_, casterModel(f), true, false},
+         {&panelMesh_, surfaces_[0].model, false, true},
+         {&markerMesh_, glm::translate(glm::mat4(1), glm::vec3(light.position)), false, false}},
+        light.position,
+        [tag](std::uint8_t s) { return s == tag; }};
   }
 
  private:
@@ -294,6 +311,7 @@ class LightBlocking final : public Lesson {
   static constexpr glm::vec3 kAmbient{0.3f};
 
   Program light_, shadow_, flat_;
+  Mesh panelMesh_, torusMesh_, markerMesh_;  // kept for the oracle's ray cast
   GpuMesh panel_, torus_, marker_;
   std::array<Surface, 3> surfaces_;
 };

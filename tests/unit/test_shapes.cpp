@@ -369,6 +369,29 @@ TEST(ShapeSurface, ConeBaseAndApex) {
   }
 }
 
+TEST(ShapeSurface, SquareRingIsTheSquareMinusTheHole) {
+  const Mesh m = stencil::makeSquareRing(2.0f, 0.5f);
+  ASSERT_EQ(m.positions.size(), 8u);
+  ASSERT_EQ(m.triangleCount(), 8u);
+  // Every triangle faces +y and the areas add up to 4^2 - 1^2.
+  double area = 0.0;
+  for (std::size_t t = 0; t < m.triangleCount(); ++t) {
+    const glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+                    c = m.positions[m.indices[3 * t + 2]];
+    const glm::vec3 n = glm::cross(b - a, c - a);
+    EXPECT_GT(n.y, 0.0f) << "triangle " << t << " faces down";
+    area += 0.5 * n.y;
+  }
+  EXPECT_NEAR(area, 16.0 - 1.0, 1e-5);
+  for (const glm::vec3& n : m.normals) EXPECT_EQ(n, glm::vec3(0, 1, 0));
+  // An annulus: two border loops of four edges, nothing else open.
+  const auto adjacency = stencil::buildEdgeAdjacency(m.indices, m.positions.size());
+  EXPECT_EQ(adjacency.report.borderEdges, 8u);
+  EXPECT_EQ(adjacency.report.nonManifoldEdges, 0u);
+  EXPECT_THROW(stencil::makeSquareRing(1.0f, 1.0f), std::invalid_argument);
+  EXPECT_THROW(stencil::makeSquareRing(1.0f, 0.0f), std::invalid_argument);
+}
+
 TEST(ShapeSurface, PlaneSpansItsHalfSize) {
   const Mesh m = stencil::makePlane(1.5f, 3);
   for (const glm::vec3& p : m.positions) {

@@ -1,0 +1,112 @@
+#include "geometry/shadow_oracle.h"
+
+#include <stdexcept>
+
+#include "geometry/raycast.h"
+
+namespace stencil {
+
+namespace {
+
+// The camera ray through a pixel centre: the centre unprojected at the near and far planes.
+Ray cameraRay(const glm::dmat4& inverseViewProjection, glm::ivec2 size, int x, int yTop) {
+  const double ndcX = (x + 0.5) / size.x * 2.0 - 1.0;
+  const double ndcY = 1.0 - (yTop + 0.5) / size.y * 2.0;
+  const glm::dvec4 nearPoint = inverseViewProjection * glm::dvec4(ndcX, ndcY, -1.0, 1.0);
+  const glm::dvec4 farPoint = inverseViewProjection * glm::dvec4(ndcX, ndcY, 1.0, 1.0);
+  const glm::dvec3 a = glm::dvec3(nearPoint) / nearPoint.w, b = glm::dvec3(farPoint) / farPoint.w;
+  return {glm::vec3(a), glm::vec3(b - a)};  // t in [0, 1] spans the view frustum
+}
+
+bool onEdge(const std::vector<PixelClass>& oracle, glm::ivec2 size, int x, int y) {
+  const PixelClass c = oracle[static_cast<std::size_t>(y * size.x + x)];
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const int nx = x + dx, ny = y + dy;
+      if (nx < 0 || ny < 0 || nx >= size.x || ny >= size.y) continue;
+      if (oracle[static_cast<std::size_t>(ny * size.x + nx)] != c) return true;
+    }
+  return false;
+}
+
+void checkSizes(const std::vector<PixelClass>& oracle, const std::vector<bool>& lit, glm::ivec2 size) {
+  const auto n = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y);
+  if (oracle.size() != n || lit.size() != n)
+    throw std::invalid_argument("oracle comparison: the images have different sizes");
+}
+
+}  // namespace
+
+std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objects, const glm::vec4& light,
+                                       const glm::mat4& viewProjection, glm::ivec2 size) {
+  RayScene scene;
+  for (const OracleObject& o : objects) scene.add(*o.mesh, o.model);
+  const auto casts = [&](int object) { return objects[static_cast<std::size_t>(object)].casts; };
+  const glm::dmat4 inverse = glm::inverse(glm::dmat4(viewProjection));
+
+  std::vector<PixelClass> classes(static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y));
+  for (int y = 0; y < size.y; ++y)
+    for (int x = 0; x < size.x; ++x) {
+      PixelClass& c = classes[static_cast<std::size_t>(y * size.x + x)];
+      const Ray ray = cameraRay(inverse, size, x, y);
+      const auto hit = scene.firstHit(ray, 0.0f, 1.0f);
+      if (!hit) {
+        c = PixelClass::Empty;
+        continue;
+      }
+      if (!objects[static_cast<std::size_t>(hit->object)].receives) {
+        c = PixelClass::Other;
+        continue;
+      }
+      // Start the shadow ray a hair off the surface, on the side the camera sees, so the
+      // receiver does not shadow itself through rounding.
+      const glm::vec3 point = ray.origin + hit->t * ray.direction;
+      const glm::vec3 towardsCamera =
+          glm::dot(hit->normal, ray.direction) < 0.0f ? hit->normal : -hit->normal;
+      const LightRay toLight = rayTowardsLight(point + 1e-4f * towardsCamera, light);
+      c = scene.occluded(toLight.ray, 0.0f, toLight.tMax, casts) ? PixelClass::Shadowed : PixelClass::Lit;
+    }
+  return classes;
+}
+
+OracleReport compareWithOracle(const std::vector<PixelClass>& oracle, const std::vector<bool>& litInImage,
+                               glm::ivec2 size) {
+  checkSizes(oracle, litInImage, size);
+  OracleReport report;
+  for (int y = 0; y < size.y; ++y)
+    for (int x = 0; x < size.x; ++x) {
+      const auto i = static_cast<std::size_t>(y * size.x + x);
+      report.receiverPixels += oracle[i] == PixelClass::Lit || oracle[i] == PixelClass::Shadowed;
+      report.shadowedPixels += oracle[i] == PixelClass::Shadowed;
+      if ((oracle[i] == PixelClass::Lit) == litInImage[i]) continue;
+      ++report.disagreements;
+      report.onEdges += onEdge(oracle, size, x, y);
+    }
+  return report;
+}
+
+std::vector<std::uint8_t> oraclePicture(const std::vector<PixelClass>& oracle,
+                                        const std::vector<bool>& litInImage, glm::ivec2 size) {
+  checkSizes(oracle, litInImage, size);
+  std::vector<std::uint8_t> rgba;
+  rgba.reserve(oracle.size() * 4);
+  for (int y = 0; y < size.y; ++y)
+    for (int x = 0; x < size.x; ++x) {
+      const auto i = static_cast<std::size_t>(y * size.x + x);
+      glm::u8vec3 c;
+      if ((oracle[i] == PixelClass::Lit) != litInImage[i])
+        c = onEdge(oracle, size, x, y) ? glm::u8vec3(240, 200, 0) : glm::u8vec3(255, 0, 0);
+      else if (oracle[i] == PixelClass::Lit)
+        c = {210, 210, 200};
+      else if (oracle[i] == PixelClass::Shadowed)
+        c = {40, 60, 140};
+      else if (oracle[i] == PixelClass::Other)
+        c = {110, 100, 90};
+      else
+        c = {0, 0, 0};
+      rgba.insert(rgba.end(), {c.r, c.g, c.b, 255});
+    }
+  return rgba;
+}
+
+}  // namespace stencil

@@ -1,0 +1,52 @@
+// An independent answer to "is this pixel in shadow?": one camera ray per pixel centre and,
+// where it meets a receiver, one ray towards the light (geometry/raycast.h). Lessons'
+// stencil results are checked against it pixel by pixel; only pixels on an edge of the
+// oracle's own picture (a silhouette, a shadow boundary, a surface's border) may differ.
+#pragma once
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "geometry/mesh.h"
+
+namespace stencil {
+
+enum class PixelClass : std::uint8_t {
+  Empty,     // the camera ray meets nothing
+  Other,     // it meets an object that receives no shadow (a planar caster, say)
+  Lit,       // it meets a receiver, and the way to the light is free
+  Shadowed,  // it meets a receiver, and a caster blocks the way to the light
+};
+
+struct OracleObject {
+  const Mesh* mesh;  // not owned
+  glm::mat4 model;
+  bool casts;     // may block the light
+  bool receives;  // its visible pixels are classified lit or shadowed
+};
+
+// The class of every pixel centre of a size.x by size.y image seen through viewProjection
+// (GL's conventions: clip space -1..1), top row first like Image. Cast shadows only: a
+// receiver facing away from the light is still Lit unless a caster is in the way.
+std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>&, const glm::vec4& light,
+                                       const glm::mat4& viewProjection, glm::ivec2 size);
+
+struct OracleReport {
+  std::size_t receiverPixels = 0;  // Lit or Shadowed by the oracle
+  std::size_t shadowedPixels = 0;  // Shadowed by the oracle
+  std::size_t disagreements = 0;   // the image's "lit receiver" differs from the oracle's
+  std::size_t onEdges = 0;         // of which on an edge of the oracle's picture (forgiven)
+  bool passed() const { return disagreements == onEdges; }
+};
+
+// Compares the image's verdict (true: a lit receiver) with the oracle's Lit, pixel by pixel.
+// A pixel is on an edge when a pixel of its 3x3 neighbourhood has another class.
+OracleReport compareWithOracle(const std::vector<PixelClass>& oracle, const std::vector<bool>& litInImage,
+                               glm::ivec2 size);
+
+// A picture of the comparison, RGBA top row first: the oracle's classes in greys and blue,
+// forgiven disagreements yellow, the others red.
+std::vector<std::uint8_t> oraclePicture(const std::vector<PixelClass>& oracle,
+                                        const std::vector<bool>& litInImage, glm::ivec2 size);
+
+}  // namespace stencil
