@@ -202,6 +202,12 @@ std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
   return out.str();
 }
 
+std::filesystem::path rawPathBeside(const std::filesystem::path& picture) {
+  std::filesystem::path raw = picture;
+  raw.replace_extension(".raw.png");
+  return raw;
+}
+
 // --oracle: the stencil's lit receivers against a CPU ray cast of the scene the lesson drew.
 bool checkShadows(const Session& s, const Image& stencil) {
   if (!s.shadowCheck)
@@ -216,16 +222,13 @@ bool checkShadows(const Session& s, const Image& stencil) {
   Image picture(size.x, size.y, 4);
   picture.pixels = oraclePicture(oracle, lit, size);
   writePng(*s.commandLine.oracle, picture);
+  Image classes(size.x, size.y, 1);  // the oracle's classes as raw bytes (PixelClass), for tools
+  for (std::size_t i = 0; i < oracle.size(); ++i) classes.pixels[i] = static_cast<std::uint8_t>(oracle[i]);
+  writePng(rawPathBeside(*s.commandLine.oracle), classes);
   std::cerr << (r.passed() ? "oracle ok: " : "oracle FAILED: ") << r.receiverPixels << " receiver pixels, "
             << r.shadowedPixels << " shadowed; " << r.disagreements << " disagree, " << r.onEdges
             << " of them on edges (picture: " << s.commandLine.oracle->string() << ")\n";
   return r.passed();
-}
-
-std::filesystem::path rawPathBeside(const std::filesystem::path& picture) {
-  std::filesystem::path raw = picture;
-  raw.replace_extension(".raw.png");
-  return raw;
 }
 
 Image stencilPicture(const CommandLine& cl, const Image& stencil) {
