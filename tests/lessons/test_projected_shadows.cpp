@@ -17,10 +17,11 @@ struct Render {
   Image colour, stencil;
 };
 
-const std::filesystem::path kOut = std::filesystem::temp_directory_path() / "stencil-lesson-04";
-
 // Runs the lesson headless at the golden size and time; skips the test without a context.
+// Each test writes into its own folder: ctest runs the tests of this file in parallel.
 std::optional<Render> render(const std::string& name, const std::string& args) {
+  const std::filesystem::path kOut = std::filesystem::temp_directory_path() / "stencil-lesson-04" /
+                                     ::testing::UnitTest::GetInstance()->current_test_info()->name();
   const auto colour = kOut / (name + ".png"), stencil = kOut / (name + "-stencil.png");
   const std::string command = std::string(LESSON_04) + " --headless --quiet --size 320x240 --time 1 " + args +
                               " --out " + colour.string() + " --stencil-out " + stencil.string();
