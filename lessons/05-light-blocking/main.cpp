@@ -103,14 +103,10 @@ class LightBlocking final : public Lesson {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_STENCIL_TEST);
-    glEnable(GL_CLIP_DISTANCE0);  // the shadow shader keeps only the caster's part
-    glEnable(GL_CLIP_DISTANCE1);  // between the receiver and the light
     if (f.on("multi"))
       renderGeneral(f);
     else
       renderOneLight(f);
-    glDisable(GL_CLIP_DISTANCE0);
-    glDisable(GL_CLIP_DISTANCE1);
   }
 
   // One light on the ground: its visible pixels keep their tag exactly where the light
@@ -299,7 +295,11 @@ class LightBlocking final : public Lesson {
     shadow_.set("receiver", s.plane);
     shadow_.set("light", light);
     shadow_.set("colour", colour);
+    glEnable(GL_CLIP_DISTANCE0);  // the shader keeps only the caster's part between the
+    glEnable(GL_CLIP_DISTANCE1);  // receiver and the light (enabled only for shaders that write them)
     torus_.draw();
+    glDisable(GL_CLIP_DISTANCE0);
+    glDisable(GL_CLIP_DISTANCE1);
   }
 
   void drawMarker(const Frame& f, const Light& l) {
