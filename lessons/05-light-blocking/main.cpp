@@ -76,7 +76,7 @@ struct Light {
 class LightBlocking final : public Lesson {
  public:
   LightBlocking()
-      : light_("05-light-blocking/light.vert", "05-light-blocking/light.frag"),
+      : light_("common/light.vert", "common/light.frag"),
         shadow_("common/projected_shadow.vert", "common/flat.frag"),
         flat_("common/flat.vert", "common/flat.frag"),
         panelMesh_(makePlane(kRoom, 1)),

@@ -1,6 +1,6 @@
 #version 330 core
-// World position and normal for per-pixel lighting. The light passes of lesson 05 add onto
-// the ambient pass with depth test EQUAL, so every pass must produce the same depths.
+// World position and normal for per-pixel lighting. Light passes that add onto an ambient pass
+// with depth test EQUAL need every pass to produce the same depths.
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 
