@@ -1,6 +1,10 @@
-// A Mesh uploaded to GL: positions at attribute 0, normals at attribute 1.
+// Geometry uploaded to GL. GpuMesh: a Mesh, positions at attribute 0, normals at attribute 1.
+// GpuTriangles: homogeneous triangles rebuilt on the CPU as the scene moves (shadow volumes),
+// vec4 positions at attribute 0, for shaders/common/volume.vert.
 #pragma once
 #include <cstdint>
+#include <glm/vec4.hpp>
+#include <vector>
 
 #include "geometry/mesh.h"
 #include "gl/gl.h"
@@ -23,6 +27,24 @@ class GpuMesh {
  private:
   GLuint vao_ = 0, buffers_[3] = {0, 0, 0};
   GLsizei indexCount_ = 0;
+};
+
+class GpuTriangles {
+ public:
+  GpuTriangles();
+  ~GpuTriangles();
+  GpuTriangles(const GpuTriangles&) = delete;
+  GpuTriangles& operator=(const GpuTriangles&) = delete;
+
+  // Replaces the contents: three vertices per triangle.
+  void upload(const std::vector<glm::vec4>& vertices);
+  // One draw call, counted by the pass recorder for --stats.
+  void draw() const;
+  std::uint64_t triangles() const { return static_cast<std::uint64_t>(vertexCount_ / 3); }
+
+ private:
+  GLuint vao_ = 0, buffer_ = 0;
+  GLsizei vertexCount_ = 0;
 };
 
 }  // namespace stencil

@@ -217,7 +217,10 @@ bool checkShadows(const Session& s, const Image& stencil) {
   const glm::ivec2 size{stencil.width, stencil.height};
   const std::vector<PixelClass> oracle = classifyPixels(check.objects, check.light, s.viewProjection, size);
   std::vector<bool> lit(stencil.pixels.size());
-  for (std::size_t i = 0; i < lit.size(); ++i) lit[i] = check.litInStencil(stencil.pixels[i]);
+  for (std::size_t i = 0; i < lit.size(); ++i) {
+    const bool receiver = oracle[i] == PixelClass::Lit || oracle[i] == PixelClass::Shadowed;
+    lit[i] = check.judgeReceiversOnly && !receiver ? false : check.litInStencil(stencil.pixels[i]);
+  }
   const OracleReport r = compareWithOracle(oracle, lit, size);
   Image picture(size.x, size.y, 4);
   picture.pixels = oraclePicture(oracle, lit, size);

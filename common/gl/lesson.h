@@ -94,6 +94,9 @@ struct ShadowCheck {
   std::vector<OracleObject> objects;
   glm::vec4 light;
   std::function<bool(std::uint8_t stencil)> litInStencil;
+  // Shadow-volume lessons keep only the shadow in the stencil; where a receiver is visible is
+  // the depth buffer's business. Then only the pixels where the oracle sees a receiver are judged.
+  bool judgeReceiversOnly = false;
 };
 
 class Lesson {

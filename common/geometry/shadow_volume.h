@@ -1,0 +1,70 @@
+// Shadow volumes built on the CPU (Kilgard, "Improving Shadows and Reflections via the
+// Stencil Buffer", section 6 and appendix C): which faces a light sees, the silhouette between
+// them, and the quads that extrude edges away from the light. The result is a soup of
+// homogeneous triangles in the mesh's own space: draw it with the mesh's model matrix.
+//
+// A light is homogeneous, as in planar.h: w = 1 a point light, w = 0 the direction towards a
+// directional light. Give it in the mesh's space (inverse model matrix times the world light).
+#pragma once
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+#include <limits>
+#include <vector>
+
+#include "geometry/adjacency.h"
+#include "geometry/mesh.h"
+
+namespace stencil {
+
+// How far the edges are pushed away from the light. A finite distance is Kilgard's
+// extendVolume: the volume ends there, and a receiver beyond it is not shadowed. Infinity puts
+// the far vertices at w = 0, the point at infinity away from the light: the volume never
+// ends, and a far clipping plane cuts only the part that lies beyond everything drawn.
+constexpr float kToInfinity = std::numeric_limits<float>::infinity();
+
+// Where `point` goes when pushed `distance` away from the light (kToInfinity: w = 0).
+glm::vec4 extrudeAway(const glm::vec3& point, const glm::vec4& light, float distance);
+
+// One flag per triangle: does it face the light? Strictly: a face edge-on to the light (or a
+// degenerate one) does not, so it casts no volume of its own.
+std::vector<bool> facesLight(const Mesh& mesh, const glm::vec4& light);
+
+// A directed edge (v0 -> v1) that extrudes into a quad facing out of the volume: the way the
+// lit face walks it.
+struct SilhouetteEdge {
+  std::uint32_t v0, v1;
+};
+
+// The edges between a face that faces the light and one that does not, and the border edges of
+// an open mesh (an outline and the holes of a planar cut-out), whichever way their one face
+// faces. Needs adjacency of welded vertices (adjacency.h); non-manifold edges give no
+// meaningful silhouette, check the adjacency report first.
+std::vector<SilhouetteEdge> silhouetteEdges(const EdgeAdjacency& adjacency, const std::vector<bool>& lit);
+
+// Homogeneous triangles, three vertices each, counter-clockwise seen from outside the volume.
+struct ShadowVolume {
+  std::vector<glm::vec4> vertices;
+  std::size_t triangleCount() const { return vertices.size() / 3; }
+};
+
+// The quad that extrudes edge a -> b away from the light, as two triangles facing out.
+void addExtrudedEdge(ShadowVolume& volume, const glm::vec3& a, const glm::vec3& b, const glm::vec4& light,
+                     float distance);
+
+// The sides of the volume of a whole caster: every silhouette edge extruded. Its boundary is
+// the union's, which is what the invert-bit method needs; the caster's own lit faces close it
+// at the light's end. Throws std::invalid_argument for a mesh with non-manifold or
+// inconsistently wound edges.
+ShadowVolume silhouetteVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, const glm::vec4& light,
+                              float distance);
+
+// Kilgard's extendVolume for every triangle that faces the light: its three edges extruded, one
+// volume per triangle. No adjacency needed and any triangle soup works, but the volumes
+// overlap, so only a counting stencil gets their union right (shared edges cancel: one quad
+// enters where the next exits). Three quads per lit triangle instead of one per silhouette edge.
+// twoSided: a triangle facing away casts too, walked backwards (a planar cut-out lit from
+// behind); a closed mesh does not need it, its front faces already cover the back's volumes.
+ShadowVolume polygonVolumes(const Mesh& mesh, const glm::vec4& light, float distance, bool twoSided = false);
+
+}  // namespace stencil

@@ -1,0 +1,187 @@
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+#include <stdexcept>
+
+#include "geometry/adjacency.h"
+#include "geometry/shadow_volume.h"
+#include "geometry/shapes.h"
+#include "geometry/weld.h"
+
+namespace {
+
+using namespace stencil;
+
+Mesh weldedCube() {
+  return weldByPosition(makeCube(1.0f)).mesh;
+}  // [-1,1]^3, 8 vertices
+
+// A volume's sides closed by its caps: the lit triangles (near, facing out towards the light)
+// and the same triangles pushed away and turned round (far). Only for finite distances.
+Mesh closedVolume(const Mesh& caster, const std::vector<bool>& lit, const ShadowVolume& sides,
+                  const glm::vec4& light, float distance) {
+  Mesh m;
+  auto add = [&m](const glm::vec3& p) {
+    m.positions.push_back(p);
+    m.indices.push_back(static_cast<std::uint32_t>(m.positions.size() - 1));
+  };
+  for (const glm::vec4& v : sides.vertices) add(glm::vec3(v) / v.w);
+  for (std::size_t t = 0; t < lit.size(); ++t) {
+    if (!lit[t]) continue;
+    glm::vec3 p[3];
+    for (int k = 0; k < 3; ++k) p[k] = caster.positions[caster.indices[3 * t + k]];
+    for (int k = 0; k < 3; ++k) add(p[k]);
+    for (int k = 2; k >= 0; --k) add(glm::vec3(extrudeAway(p[k], light, distance)));
+  }
+  return m;
+}
+
+TEST(ExtrudeAway, PointLightFiniteAndInfinite) {
+  const glm::vec4 light(0, 5, 0, 1);
+  const glm::vec4 near = extrudeAway({3, 1, 0}, light, 10.0f);  // away along (3,-4,0)/5
+  EXPECT_FLOAT_EQ(near.w, 1.0f);
+  EXPECT_NEAR(near.x, 3.0f + 6.0f, 1e-5f);
+  EXPECT_NEAR(near.y, 1.0f - 8.0f, 1e-5f);
+  const glm::vec4 far = extrudeAway({3, 1, 0}, light, kToInfinity);
+  EXPECT_EQ(far, glm::vec4(3, -4, 0, 0));  // the direction p - L at w = 0
+}
+
+TEST(ExtrudeAway, DirectionalLightMovesEveryPointTheSameWay) {
+  const glm::vec4 light(0, 2, 0, 0);  // light from above
+  EXPECT_EQ(extrudeAway({1, 1, 1}, light, 3.0f), glm::vec4(1, -2, 1, 1));
+  EXPECT_EQ(extrudeAway({7, 0, -2}, light, kToInfinity), glm::vec4(0, -2, 0, 0));
+}
+
+TEST(ExtrudeAway, ALightOnThePointLeavesItWhereItIs) {
+  EXPECT_EQ(extrudeAway({1, 2, 3}, {1, 2, 3, 1}, 5.0f), glm::vec4(1, 2, 3, 1));
+}
+
+TEST(FacesLight, CubeSeesOneFaceFromAPointOnItsAxis) {
+  const Mesh cube = makeCube(1.0f);
+  const std::vector<bool> lit = facesLight(cube, {5, 0, 0, 1});
+  int count = 0;
+  for (std::size_t t = 0; t < lit.size(); ++t) {
+    if (!lit[t]) continue;
+    ++count;
+    for (int k = 0; k < 3; ++k) EXPECT_FLOAT_EQ(cube.positions[cube.indices[3 * t + k]].x, 1.0f);
+  }
+  EXPECT_EQ(count, 2);  // the +x face; from (5,0,0) every side face's plane has the light behind it
+}
+
+TEST(FacesLight, EdgeOnFacesDoNotFaceTheLight) {
+  // A directional light along +x grazes the four faces parallel to x.
+  const std::vector<bool> lit = facesLight(makeCube(1.0f), {1, 0, 0, 0});
+  int count = 0;
+  for (bool l : lit) count += l;
+  EXPECT_EQ(count, 2);
+}
+
+TEST(SilhouetteEdges, CubeFromAnAxisIsTheLitFaceOutlineWalkedByIt) {
+  const Mesh cube = weldedCube();
+  const EdgeAdjacency adjacency = buildEdgeAdjacency(cube.indices, cube.positions.size());
+  const std::vector<bool> lit = facesLight(cube, {0, 0, 1, 0});  // the +z face
+  const std::vector<SilhouetteEdge> edges = silhouetteEdges(adjacency, lit);
+  ASSERT_EQ(edges.size(), 4u);
+  for (const SilhouetteEdge& e : edges) {
+    const glm::vec3 a = cube.positions[e.v0], b = cube.positions[e.v1];
+    EXPECT_FLOAT_EQ(a.z, 1.0f);
+    EXPECT_FLOAT_EQ(b.z, 1.0f);
+    // Walked counter-clockwise seen from +z: the face's centre (0,0,1) lies to the left.
+    EXPECT_GT(glm::cross(b - a, glm::vec3(0, 0, 1) - a).z, 0.0f);
+  }
+}
+
+TEST(SilhouetteEdges, BorderEdgesOfAnOpenCutOutFromEitherSide) {
+  const Mesh square = makePlane(1.0f);  // y = 0, facing +y, four border edges
+  const EdgeAdjacency adjacency = buildEdgeAdjacency(square.indices, square.positions.size());
+  for (float side : {1.0f, -1.0f}) {
+    const std::vector<bool> lit = facesLight(square, {0, side, 0, 0});
+    const std::vector<SilhouetteEdge> edges = silhouetteEdges(adjacency, lit);
+    ASSERT_EQ(edges.size(), 4u);
+    for (const SilhouetteEdge& e : edges) {  // counter-clockwise seen from the light's side
+      const glm::vec3 a = square.positions[e.v0], b = square.positions[e.v1];
+      EXPECT_GT(side * glm::cross(b - a, -a).y, 0.0f);
+    }
+  }
+}
+
+TEST(SilhouetteVolume, DirectionalPrismHasTheDerivedVolumeAndFacesOut) {
+  // Light from +z: the volume behind the +z face is a 2 x 2 x d prism (volume 4d) once closed.
+  const Mesh cube = weldedCube();
+  const EdgeAdjacency adjacency = buildEdgeAdjacency(cube.indices, cube.positions.size());
+  const glm::vec4 light(0, 0, 1, 0);
+  const float d = 3.0f;
+  const ShadowVolume sides = silhouetteVolume(cube, adjacency, light, d);
+  EXPECT_EQ(sides.triangleCount(), 8u);  // 4 edges, 2 triangles each
+  const Mesh closed = closedVolume(cube, facesLight(cube, light), sides, light, d);
+  EXPECT_NEAR(signedVolume(closed), 4.0 * d, 1e-4);
+  const Mesh welded = weldByPosition(closed).mesh;
+  EXPECT_TRUE(buildEdgeAdjacency(welded.indices, welded.positions.size()).report.closedManifold());
+}
+
+TEST(SilhouetteVolume, PointLightPushesAlongTheRaysAndFacesOut) {
+  // Light at (0,0,3) over the +z face: every far vertex lies on the ray from the light through
+  // its near one, the given distance further.
+  const Mesh cube = weldedCube();
+  const EdgeAdjacency adjacency = buildEdgeAdjacency(cube.indices, cube.positions.size());
+  const glm::vec4 light(0, 0, 3, 1);
+  const ShadowVolume sides = silhouetteVolume(cube, adjacency, light, 2.0f);
+  ASSERT_EQ(sides.triangleCount(), 8u);
+  for (std::size_t t = 0; t < sides.triangleCount(); ++t) {
+    const glm::vec3 b(sides.vertices[3 * t]), a(sides.vertices[3 * t + 1]), aFar(sides.vertices[3 * t + 2]);
+    if (t % 2 == 0) {  // b, a, a': a' is a pushed 2 further from the light
+      EXPECT_NEAR(glm::length(aFar - glm::vec3(light)) - glm::length(a - glm::vec3(light)), 2.0f, 1e-5f);
+      EXPECT_NEAR(glm::length(glm::cross(glm::normalize(aFar - a), glm::normalize(a - glm::vec3(light)))),
+                  0.0f, 1e-5f);
+      // The quad faces out: away from the cube's axis.
+      const glm::vec3 n = glm::cross(a - b, aFar - b);
+      EXPECT_GT(glm::dot(n, glm::vec3(b.x + a.x, b.y + a.y, 0)), 0.0f);
+    }
+  }
+}
+
+TEST(SilhouetteVolume, InfiniteExtrusionPutsHalfTheVerticesAtInfinity) {
+  const Mesh cube = weldedCube();
+  const EdgeAdjacency adjacency = buildEdgeAdjacency(cube.indices, cube.positions.size());
+  const ShadowVolume sides = silhouetteVolume(cube, adjacency, {2, 3, 4, 1}, kToInfinity);
+  std::size_t atInfinity = 0;
+  for (const glm::vec4& v : sides.vertices) atInfinity += v.w == 0.0f;
+  EXPECT_EQ(atInfinity, sides.vertices.size() / 2);
+  EXPECT_GT(sides.triangleCount(), 0u);
+}
+
+TEST(SilhouetteVolume, RefusesANonManifoldMesh) {
+  Mesh fin;  // three triangles on one edge
+  fin.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}};
+  fin.indices = {0, 1, 2, 1, 0, 3, 0, 1, 4};
+  const EdgeAdjacency adjacency = buildEdgeAdjacency(fin.indices, fin.positions.size());
+  EXPECT_THROW(silhouetteVolume(fin, adjacency, {0, 0, 5, 1}, 1.0f), std::invalid_argument);
+}
+
+TEST(PolygonVolumes, UnionOfPerTriangleVolumesHasTheSilhouettesVolume) {
+  // Each lit triangle's prism closed by its own caps: 2 prisms of 2d each, 4d together, the
+  // same as the silhouette's prism; the shared diagonal's two quads cancel.
+  const Mesh cube = weldedCube();
+  const glm::vec4 light(0, 0, 1, 0);
+  const float d = 3.0f;
+  const ShadowVolume volumes = polygonVolumes(cube, light, d);
+  EXPECT_EQ(volumes.triangleCount(), 12u);  // 2 triangles x 3 quads x 2
+  EXPECT_NEAR(signedVolume(closedVolume(cube, facesLight(cube, light), volumes, light, d)), 4.0 * d, 1e-4);
+}
+
+TEST(PolygonVolumes, TwoSidedCutOutCastsFromBehind) {
+  const Mesh square = makePlane(1.0f);
+  const glm::vec4 below(0, -1, 0, 0);
+  EXPECT_EQ(polygonVolumes(square, below, 1.0f).triangleCount(), 0u);
+  const ShadowVolume twoSided = polygonVolumes(square, below, 1.0f, true);
+  ASSERT_EQ(twoSided.triangleCount(), 12u);
+  // Extruded upwards (away from a light below), every quad still faces out of its prism:
+  // the prisms of the square's triangles close to 2 * (area 2 each) * 1.
+  Mesh flipped = square;
+  for (std::size_t t = 0; t < flipped.triangleCount(); ++t)
+    std::swap(flipped.indices[3 * t + 1], flipped.indices[3 * t + 2]);
+  EXPECT_NEAR(signedVolume(closedVolume(flipped, facesLight(flipped, below), twoSided, below, 1.0f)), 4.0,
+              1e-4);
+}
+
+}  // namespace
