@@ -98,6 +98,7 @@ void Session::setVariant(const std::string& name, const std::vector<std::pair<st
   checkNeeds(findVariant(info, name).needs, "variant '" + name + "'");
   variant = name;
   options = optionsFor(info, variant, settings);
+  camera = findVariant(info, name).camera.value_or(info.camera);
 }
 
 void Session::makeFramebuffer(int width, int height) {

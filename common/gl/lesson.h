@@ -31,14 +31,6 @@ enum class Feature { DepthBoundsTest, PipelineStatistics, ClipControl, DepthClam
 const char* featureName(Feature);
 bool hasFeature(const GlFeatures&, Feature);
 
-// A named configuration of the options, e.g. "stencil-off" to show the artifact.
-struct Variant {
-  std::string name;
-  std::string help;
-  std::vector<std::pair<std::string, int>> settings;  // option name, value
-  std::vector<Feature> needs = {};                    // beyond what the lesson needs
-};
-
 struct OrbitCamera {
   glm::vec3 target{0.0f};
   float distance = 6.0f;
@@ -50,6 +42,15 @@ struct OrbitCamera {
   glm::vec3 eye() const;
   glm::mat4 view() const;
   glm::mat4 projection(float aspect) const;
+};
+
+// A named configuration of the options, e.g. "stencil-off" to show the artifact.
+struct Variant {
+  std::string name;
+  std::string help;
+  std::vector<std::pair<std::string, int>> settings;  // option name, value
+  std::vector<Feature> needs = {};                    // beyond what the lesson needs
+  std::optional<OrbitCamera> camera = {};             // where the variant needs the eye; else the lesson's
 };
 
 struct LessonInfo {

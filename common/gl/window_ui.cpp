@@ -50,7 +50,7 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
                                             : (st.passStep + 1 >= passCount ? -1 : st.passStep + 1);
       return;
     case GLFW_KEY_S: st.screenshot = true; return;
-    case GLFW_KEY_R: s.camera = s.info.camera; return;
+    case GLFW_KEY_R: s.camera = findVariant(s.info, s.variant).camera.value_or(s.info.camera); return;
     case GLFW_KEY_V: {
       const auto& vs = s.info.variants;
       auto it = std::find_if(vs.begin(), vs.end(), [&](const Variant& v) { return v.name == s.variant; });
