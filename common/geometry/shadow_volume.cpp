@@ -58,10 +58,16 @@ std::vector<SilhouetteEdge> silhouetteEdges(const EdgeAdjacency& adjacency, cons
 void addExtrudedEdge(ShadowVolume& volume, const glm::vec3& a, const glm::vec3& b, const glm::vec4& light,
                      float distance) {
   // The lit face walks a -> b counter-clockwise, so the volume lies to the left of a -> b seen
-  // from the light; b, a, a', b' turns the quad's front face out of it.
+  // from the light; the quad b, a, a', b' faces out of it. It is split on the diagonal from the
+  // smaller endpoint (in x, then y, then z): two triangles sharing the edge (polygonVolumes)
+  // then give the same two triangles, and their quads cancel pixel for pixel.
   const glm::vec4 a4(a, 1.0f), b4(b, 1.0f);
   const glm::vec4 aFar = extrudeAway(a, light, distance), bFar = extrudeAway(b, light, distance);
-  volume.vertices.insert(volume.vertices.end(), {b4, a4, aFar, b4, aFar, bFar});
+  const bool aFirst = a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+  if (aFirst)
+    volume.vertices.insert(volume.vertices.end(), {a4, aFar, bFar, a4, bFar, b4});
+  else
+    volume.vertices.insert(volume.vertices.end(), {b4, a4, aFar, b4, aFar, bFar});
 }
 
 ShadowVolume silhouetteVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, const glm::vec4& light,

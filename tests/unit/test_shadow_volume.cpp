@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <stdexcept>
 
@@ -120,23 +121,51 @@ TEST(SilhouetteVolume, DirectionalPrismHasTheDerivedVolumeAndFacesOut) {
 }
 
 TEST(SilhouetteVolume, PointLightPushesAlongTheRaysAndFacesOut) {
-  // Light at (0,0,3) over the +z face: every far vertex lies on the ray from the light through
-  // its near one, the given distance further.
+  // Light at (0,0,3) over the +z face: every vertex is a corner of that face or such a corner
+  // pushed 2 further along the ray from the light, and every triangle faces away from the axis.
   const Mesh cube = weldedCube();
   const EdgeAdjacency adjacency = buildEdgeAdjacency(cube.indices, cube.positions.size());
-  const glm::vec4 light(0, 0, 3, 1);
-  const ShadowVolume sides = silhouetteVolume(cube, adjacency, light, 2.0f);
+  const glm::vec3 light(0, 0, 3);
+  const ShadowVolume sides = silhouetteVolume(cube, adjacency, glm::vec4(light, 1), 2.0f);
   ASSERT_EQ(sides.triangleCount(), 8u);
-  for (std::size_t t = 0; t < sides.triangleCount(); ++t) {
-    const glm::vec3 b(sides.vertices[3 * t]), a(sides.vertices[3 * t + 1]), aFar(sides.vertices[3 * t + 2]);
-    if (t % 2 == 0) {  // b, a, a': a' is a pushed 2 further from the light
-      EXPECT_NEAR(glm::length(aFar - glm::vec3(light)) - glm::length(a - glm::vec3(light)), 2.0f, 1e-5f);
-      EXPECT_NEAR(glm::length(glm::cross(glm::normalize(aFar - a), glm::normalize(a - glm::vec3(light)))),
-                  0.0f, 1e-5f);
-      // The quad faces out: away from the cube's axis.
-      const glm::vec3 n = glm::cross(a - b, aFar - b);
-      EXPECT_GT(glm::dot(n, glm::vec3(b.x + a.x, b.y + a.y, 0)), 0.0f);
+  for (const glm::vec4& v : sides.vertices) {
+    const glm::vec3 p(v);
+    if (p.z == 1.0f) {
+      EXPECT_FLOAT_EQ(std::abs(p.x), 1.0f);
+      EXPECT_FLOAT_EQ(std::abs(p.y), 1.0f);
+      continue;
     }
+    const glm::vec3 corner(p.x > 0 ? 1 : -1, p.y > 0 ? 1 : -1, 1);
+    EXPECT_NEAR(glm::length(p - light) - glm::length(corner - light), 2.0f, 1e-5f);
+    EXPECT_NEAR(glm::length(glm::cross(glm::normalize(p - corner), glm::normalize(corner - light))), 0.0f,
+                1e-5f);
+  }
+  for (std::size_t t = 0; t < sides.triangleCount(); ++t) {
+    const glm::vec3 a(sides.vertices[3 * t]), b(sides.vertices[3 * t + 1]), c(sides.vertices[3 * t + 2]);
+    const glm::vec3 centre = (a + b + c) / 3.0f;
+    EXPECT_GT(glm::dot(glm::cross(b - a, c - a), glm::vec3(centre.x, centre.y, 0)), 0.0f) << "triangle " << t;
+  }
+}
+
+TEST(AddExtrudedEdge, AnEdgeWalkedBothWaysGivesTheSameTrianglesFacingOpposite) {
+  // Two triangles sharing an edge extrude it both ways; the quads must cover the same pixels, so
+  // they are split on the same diagonal: the same vertex sets, wound the other way round.
+  const glm::vec3 a(0.3f, -1.0f, 0.5f), b(-0.2f, 1.0f, 0.5f);
+  const glm::vec4 light(0.1f, 0.2f, 4.0f, 1.0f);
+  ShadowVolume forward, backward;
+  addExtrudedEdge(forward, a, b, light, kToInfinity);
+  addExtrudedEdge(backward, b, a, light, kToInfinity);
+  ASSERT_EQ(forward.triangleCount(), 2u);
+  ASSERT_EQ(backward.triangleCount(), 2u);
+  for (std::size_t t = 0; t < 2; ++t) {
+    const glm::vec4* f = &forward.vertices[3 * t];
+    bool matched = false;
+    for (std::size_t u = 0; u < 2; ++u) {
+      const glm::vec4* g = &backward.vertices[3 * u];
+      for (int r = 0; r < 3; ++r)  // g reversed and rotated equals f
+        matched |= f[0] == g[(r + 2) % 3] && f[1] == g[(r + 1) % 3] && f[2] == g[r];
+    }
+    EXPECT_TRUE(matched) << "triangle " << t;
   }
 }
 
