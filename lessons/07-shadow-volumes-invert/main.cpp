@@ -67,7 +67,7 @@ LessonInfo lessonInfo() {
        {},
        eyeInShadow()},
   };
-  info.passes = {"lit", "volumes", "unlit", "show volumes"};
+  info.passes = {"lit", "volumes", "unlit", "show-volumes"};
   info.camera.target = {-0.3f, 0.7f, -0.7f};
   info.camera.distance = 7.5f;
   info.camera.azimuthDeg = 35.0f;
@@ -158,7 +158,7 @@ class InvertShadowVolumes final : public Lesson {
       glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
       drawVolumes(f, volumes, glm::vec4(1.0f, 0.85f, 0.2f, 0.18f));
       glDisable(GL_BLEND);
-      f.pass("show volumes");
+      f.pass("show-volumes");
     }
     glDepthMask(GL_TRUE);
     glStencilMask(0xFF);

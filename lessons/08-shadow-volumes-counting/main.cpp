@@ -95,7 +95,7 @@ LessonInfo lessonInfo() {
        {},
        nearPlaneInVolume()},
   };
-  info.passes = {"lit", "front faces", "back faces", "unlit", "show volumes"};
+  info.passes = {"lit", "front-faces", "back-faces", "unlit", "show-volumes"};
   info.camera.target = {-0.3f, 0.7f, -0.7f};
   info.camera.distance = 7.5f;
   info.camera.azimuthDeg = 35.0f;
@@ -177,12 +177,12 @@ class CountingShadowVolumes final : public Lesson {
         glCullFace(GL_BACK);                // front faces only:
         glStencilOp(GL_KEEP, GL_KEEP, up);  // in front of the scene, the ray enters a volume
         drawVolumes(f, glm::vec4(0));
-        f.pass("front faces");
+        f.pass("front-faces");
       } else {
         glCullFace(GL_FRONT);                 // back faces only:
         glStencilOp(GL_KEEP, GL_KEEP, down);  // in front of the scene, the ray leaves a volume
         drawVolumes(f, glm::vec4(0));
-        f.pass("back faces");
+        f.pass("back-faces");
       }
     }
     glCullFace(GL_BACK);
@@ -203,7 +203,7 @@ class CountingShadowVolumes final : public Lesson {
       glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
       drawVolumes(f, glm::vec4(1.0f, 0.85f, 0.2f, 0.12f));
       glDisable(GL_BLEND);
-      f.pass("show volumes");
+      f.pass("show-volumes");
     }
     glDepthMask(GL_TRUE);
   }

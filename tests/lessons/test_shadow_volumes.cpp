@@ -161,9 +161,9 @@ TEST(CountingShadowVolumes, CountingTheSameSilhouetteCostsWhatTheBitCosts) {
   if (!invert || !silhouette || !perTriangle) GTEST_SKIP() << "no GL context";
   const std::uint64_t bit = samplesPassed(*invert, "volumes");
   const std::uint64_t counted =
-      samplesPassed(*silhouette, "front faces") + samplesPassed(*silhouette, "back faces");
+      samplesPassed(*silhouette, "front-faces") + samplesPassed(*silhouette, "back-faces");
   const std::uint64_t extruded =
-      samplesPassed(*perTriangle, "front faces") + samplesPassed(*perTriangle, "back faces");
+      samplesPassed(*perTriangle, "front-faces") + samplesPassed(*perTriangle, "back-faces");
   EXPECT_EQ(counted, bit);
   EXPECT_GT(extruded, counted);
   std::cout << "volume fragments passing depth: invert " << bit << ", counting silhouettes " << counted
