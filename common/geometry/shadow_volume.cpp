@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "geometry/weld.h"
+
 namespace stencil {
 
 glm::vec4 extrudeAway(const glm::vec3& point, const glm::vec4& light, float distance) {
@@ -82,6 +84,14 @@ ShadowVolume silhouetteVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, 
   for (const SilhouetteEdge& e : silhouetteEdges(adjacency, facesLight(mesh, light)))
     addExtrudedEdge(volume, mesh.positions[e.v0], mesh.positions[e.v1], light, distance);
   return volume;
+}
+
+CasterEdges::CasterEdges(const Mesh& mesh)
+    : welded(weldByPosition(mesh).mesh),
+      adjacency(buildEdgeAdjacency(welded.indices, welded.positions.size())) {}
+
+ShadowVolume silhouetteVolume(const CasterEdges& caster, const glm::vec4& light, float distance) {
+  return silhouetteVolume(caster.welded, caster.adjacency, light, distance);
 }
 
 ShadowVolume polygonVolumes(const Mesh& mesh, const glm::vec4& light, float distance, bool twoSided) {

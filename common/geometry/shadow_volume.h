@@ -52,12 +52,21 @@ struct ShadowVolume {
 void addExtrudedEdge(ShadowVolume& volume, const glm::vec3& a, const glm::vec3& b, const glm::vec4& light,
                      float distance);
 
+// What silhouetteVolume needs of a caster, built once: a welded copy (shapes split vertices
+// at creases to carry normals; the silhouette needs them joined) and its edges' faces.
+struct CasterEdges {
+  Mesh welded;
+  EdgeAdjacency adjacency;
+  explicit CasterEdges(const Mesh& mesh);
+};
+
 // The sides of the volume of a whole caster: every silhouette edge extruded. Its boundary is
 // the union's, which is what the invert-bit method needs; the caster's own lit faces close it
 // at the light's end. Throws std::invalid_argument for a mesh with non-manifold or
 // inconsistently wound edges.
 ShadowVolume silhouetteVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, const glm::vec4& light,
                               float distance);
+ShadowVolume silhouetteVolume(const CasterEdges& caster, const glm::vec4& light, float distance);
 
 // Kilgard's extendVolume for every triangle that faces the light: its three edges extruded, one
 // volume per triangle. No adjacency needed and any triangle soup works, but the volumes

@@ -15,10 +15,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "geometry/adjacency.h"
 #include "geometry/shadow_volume.h"
 #include "geometry/shapes.h"
-#include "geometry/weld.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
 #include "gl/shader.h"
@@ -85,15 +83,6 @@ struct Object {
   glm::mat4 model;
   glm::vec3 colour;
   bool twoSided;  // the cut-out is seen from both sides: no culling
-};
-
-// A caster as the shadow volume needs it: welded, with its edges' faces.
-struct Caster {
-  Mesh welded;
-  EdgeAdjacency adjacency;
-  explicit Caster(const Mesh& m)
-      : welded(weldByPosition(m).mesh),
-        adjacency(buildEdgeAdjacency(welded.indices, welded.positions.size())) {}
 };
 
 class InvertShadowVolumes final : public Lesson {
@@ -201,7 +190,7 @@ class InvertShadowVolumes final : public Lesson {
 
   bool isCaster(const Object& o) const { return o.mesh != &groundMesh_; }
 
-  const Caster& casterFor(const Object& o) const {
+  const CasterEdges& casterFor(const Object& o) const {
     if (o.mesh == &cubeMesh_) return cubeCaster_;
     if (o.mesh == &ballMesh_) return ballCaster_;
     return frameCaster_;
@@ -215,9 +204,9 @@ class InvertShadowVolumes final : public Lesson {
     std::size_t i = 0;
     for (const Object& o : sceneAt(f)) {
       if (!isCaster(o)) continue;
-      const Caster& c = casterFor(o);
+      const CasterEdges& c = casterFor(o);
       const glm::vec4 light = glm::inverse(o.model) * kLight;
-      volumeGpu_[i].upload(silhouetteVolume(c.welded, c.adjacency, light, kToInfinity).vertices);
+      volumeGpu_[i].upload(silhouetteVolume(c, light, kToInfinity).vertices);
       volumeModels_.push_back(o.model);
       built.push_back(&volumeGpu_[i++]);
     }
@@ -260,7 +249,7 @@ class InvertShadowVolumes final : public Lesson {
   Program light_, volume_, flat_;
   Mesh groundMesh_, cubeMesh_, ballMesh_, frameMesh_, markerMesh_;
   GpuMesh ground_, cube_, ball_, frame_, marker_;
-  Caster cubeCaster_, ballCaster_, frameCaster_;
+  CasterEdges cubeCaster_, ballCaster_, frameCaster_;
   GpuTriangles volumeGpu_[2];
   std::vector<glm::mat4> volumeModels_;
 };

@@ -14,10 +14,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "geometry/adjacency.h"
 #include "geometry/shadow_volume.h"
 #include "geometry/shapes.h"
-#include "geometry/weld.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
 #include "gl/shader.h"
@@ -111,15 +109,6 @@ struct Object {
   const GpuMesh* gpu;
   glm::mat4 model;
   glm::vec3 colour;
-};
-
-// A caster as the silhouette needs it: welded, with its edges' faces.
-struct Caster {
-  Mesh welded;
-  EdgeAdjacency adjacency;
-  explicit Caster(const Mesh& m)
-      : welded(weldByPosition(m).mesh),
-        adjacency(buildEdgeAdjacency(welded.indices, welded.positions.size())) {}
 };
 
 class CountingShadowVolumes final : public Lesson {
@@ -244,7 +233,7 @@ class CountingShadowVolumes final : public Lesson {
 
   bool isCaster(const Object& o) const { return o.mesh != &groundMesh_; }
 
-  const Caster& casterFor(const Object& o) const {
+  const CasterEdges& casterFor(const Object& o) const {
     if (o.mesh == &cubeMesh_) return cubeCaster_;
     if (o.mesh == &torusMesh_) return torusCaster_;
     return ballCaster_;
@@ -259,11 +248,10 @@ class CountingShadowVolumes final : public Lesson {
     std::size_t i = 0;
     for (const Object& o : scene) {
       if (!isCaster(o)) continue;
-      const Caster& c = casterFor(o);
+      const CasterEdges& c = casterFor(o);
       const glm::vec4 light = glm::inverse(o.model) * worldLight;
-      volumeGpu_[i++].upload(f.on("silhouette")
-                                 ? silhouetteVolume(c.welded, c.adjacency, light, distance).vertices
-                                 : polygonVolumes(*o.mesh, light, distance).vertices);
+      volumeGpu_[i++].upload(f.on("silhouette") ? silhouetteVolume(c, light, distance).vertices
+                                                : polygonVolumes(*o.mesh, light, distance).vertices);
       volumeModels_.push_back(o.model);
     }
   }
@@ -299,7 +287,7 @@ class CountingShadowVolumes final : public Lesson {
   Program light_, volume_, flat_;
   Mesh groundMesh_, cubeMesh_, torusMesh_, ballMesh_, markerMesh_;
   GpuMesh ground_, cube_, torus_, ball_, marker_;
-  Caster cubeCaster_, torusCaster_, ballCaster_;
+  CasterEdges cubeCaster_, torusCaster_, ballCaster_;
   GpuTriangles volumeGpu_[2];
   std::vector<glm::mat4> volumeModels_;
 };

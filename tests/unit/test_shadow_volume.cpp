@@ -214,3 +214,18 @@ TEST(PolygonVolumes, TwoSidedCutOutCastsFromBehind) {
 }
 
 }  // namespace
+
+namespace {
+
+using stencil::CasterEdges;
+
+TEST(CasterEdges, WeldsTheCreasesAndGivesTheSameVolume) {
+  const CasterEdges caster(stencil::makeCube(1.0f));  // 24 vertices split at the creases
+  EXPECT_EQ(caster.welded.positions.size(), 8u);
+  EXPECT_TRUE(caster.adjacency.report.closedManifold());
+  const glm::vec4 light(2, 3, 4, 1);
+  EXPECT_EQ(stencil::silhouetteVolume(caster, light, 2.0f).vertices,
+            stencil::silhouetteVolume(caster.welded, caster.adjacency, light, 2.0f).vertices);
+}
+
+}  // namespace
