@@ -372,7 +372,9 @@ class CutoutExtrusion final : public Lesson {
     const float a = 0.4f * static_cast<float>(f.time) + 0.5f;
     const glm::mat4 logo = logoModel(f);
     switch (f.option("light")) {
-      case 1: return {glm::normalize(glm::vec3(0.35f * std::cos(a), 1.0f, 0.35f * std::sin(a))), 0.0f};
+      case 1:
+        return {glm::normalize(glm::vec3(-0.45f + 0.2f * std::cos(a), 1.0f, -0.45f + 0.2f * std::sin(a))),
+                0.0f};
       case 2:  // 0.3 above the lattice's centre, circling a little
         return logo * glm::vec4(0.15f * std::cos(a), 0.3f, 0.15f * std::sin(a), 1.0f);
       case 3:  // a direction in the lattice's plane (y = 0 in its space), as steep as the plane allows
@@ -393,7 +395,9 @@ class CutoutExtrusion final : public Lesson {
     light_.set("viewProjection", f.projection * f.view);
     light_.set("ambient", kAmbient);
     light_.set("light", light);
-    light_.set("lightColour", on ? glm::vec3(1.1f, 1.05f, 0.95f) : glm::vec3(0.0f));
+    // A directional light does not fall off with distance: dimmer, so the ground is not white.
+    const glm::vec3 colour = light.w != 0.0f ? glm::vec3(1.1f, 1.05f, 0.95f) : glm::vec3(0.75f, 0.72f, 0.65f);
+    light_.set("lightColour", on ? colour : glm::vec3(0.0f));
     light_.set("eye", f.eye);
   }
 
