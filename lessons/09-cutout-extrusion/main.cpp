@@ -56,11 +56,11 @@ LessonInfo lessonInfo() {
        0, 4},
       {"distance", 'X', "CPU extrusion distance in tenths (0: to infinity, w = 0)", 0, 60},
       {"logo", 'O', "the cut-out (a window lattice) above the scene", 1},
-      {"holes", 'N', "holes per row of the lattice", 3, 16},
+      {"holes", 'N', "holes per row of the lattice (at least 1)", 3, 16},
       {"teapot", 'T',
        "the teapot's own shadow: 0 none, 1 flattened into a cut-out silhouette, 2 planar (figure 14)", 0, 2},
       {"sphere", 'Y', "a sphere instead of the teapot", 0},
-      {"slices", 'I', "the sphere's slices (stacks: half as many)", 24, 256},
+      {"slices", 'I', "the sphere's slices, at least 3 (stacks: half as many)", 24, 256},
       {"analytic", 'A', "--oracle judges against the true sphere, not its mesh", 0},
       {"volumes", 'W', "draw the shadow volumes translucently", 0},
       {"shadow", 'H', "shadows at all (off: everything lit)", 1},
@@ -164,8 +164,8 @@ class CutoutExtrusion final : public Lesson {
     glClearColor(0.55f, 0.65f, 0.8f, 1.0f);
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glEnable(GL_STENCIL_TEST);
+    glEnable(GL_DEPTH_TEST);                     // nearest surface wins, as always
+    glEnable(GL_STENCIL_TEST);                   // the stencil holds the shadow count
     glStencilFunc(GL_ALWAYS, kGroundTag, 0xFF);  // the reference is the ground's tag...
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);      // ...written only in figure 14 (drawScene)
     drawScene(f, light, true, f.option("teapot") == kPlanar);
@@ -178,55 +178,55 @@ class CutoutExtrusion final : public Lesson {
     glDepthMask(GL_FALSE);                                // and are not surfaces
     glDepthFunc(GL_LESS);                                 // only their parts in front of the scene
     glStencilMask(kCount);                                // the count keeps off the ground's tag bit
-    glStencilFunc(GL_ALWAYS, 0, 0xFF);
-    glEnable(GL_CULL_FACE);
+    glStencilFunc(GL_ALWAYS, 0, 0xFF);            // every volume face counts, whatever the stencil holds
+    glEnable(GL_CULL_FACE);                       // one face orientation per pass
     glCullFace(GL_BACK);                          // front faces: the eye ray enters a volume
     glStencilOp(GL_KEEP, GL_KEEP, GL_INCR_WRAP);  // wraps, so the order of faces does not matter
     drawVolumes(f);
-    glCullFace(GL_FRONT);  // back faces: the eye ray leaves it
-    glStencilOp(GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+    glCullFace(GL_FRONT);                         // back faces: the eye ray leaves it
+    glStencilOp(GL_KEEP, GL_KEEP, GL_DECR_WRAP);  // leaving decrements: zero again outside every volume
     drawVolumes(f);
-    glCullFace(GL_BACK);
-    glDisable(GL_CULL_FACE);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glCullFace(GL_BACK);                              // GL's default again
+    glDisable(GL_CULL_FACE);                          // the scene is drawn with its own culling
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);  // colour back on for the unlit pass
     f.pass("count");
 
     // ---- the scene again with the light off, where the count is not zero ---------------------
-    glDepthFunc(GL_EQUAL);                  // exactly the visible surfaces (invariant positions)
-    glStencilFunc(GL_NOTEQUAL, 0, kCount);  // inside at least one volume
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glDepthFunc(GL_EQUAL);                   // exactly the visible surfaces (invariant positions)
+    glStencilFunc(GL_NOTEQUAL, 0, kCount);   // inside at least one volume
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);  // the count stays as the oracle reads it
     drawScene(f, light, false, false);
     f.pass("unlit");
 
     // ---- figure 14: the teapot's planar shadow on the floor (lesson 05's blocking recipe) ----
     if (f.option("teapot") == kPlanar) {
-      glStencilMask(0xFF);
+      glStencilMask(0xFF);                                  // the tag bit is written from here on
       glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // mark only
       glDisable(GL_DEPTH_TEST);                             // the tag says where the ground is visible
       glStencilFunc(GL_EQUAL, kGroundTag, 0xFF);            // visible ground not yet in a volume's shadow,
       glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);               // marked once: tag -> tag + 1
       glEnable(GL_CULL_FACE);                               // one layer of teapot is enough
       drawPlanarShadow(f, light);
-      glDisable(GL_CULL_FACE);
-      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-      glStencilFunc(GL_EQUAL, kGroundTag + 1, 0xFF);  // the marked ground, without the light
-      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+      glDisable(GL_CULL_FACE);                          // back to the scene's own culling
+      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);  // colour back on
+      glStencilFunc(GL_EQUAL, kGroundTag + 1, 0xFF);    // the marked ground, without the light
+      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);           // the mark stays for the oracle
       drawGround(f, light, false);
-      glEnable(GL_DEPTH_TEST);
+      glEnable(GL_DEPTH_TEST);  // back to the depth test for what follows
       f.pass("planar");
     }
-    glDepthFunc(GL_LESS);
+    glDepthFunc(GL_LESS);  // GL's defaults again for the next frame's passes
     glDepthMask(GL_TRUE);
     glStencilMask(0xFF);
 
     // ---- the volumes themselves, translucent, for the classroom -----------------------------
     if (f.on("volumes")) {
       glDisable(GL_STENCIL_TEST);  // drawn over the result, the stencil stays the shadow's
-      glEnable(GL_BLEND);
+      glEnable(GL_BLEND);          // translucent volumes over the scene
       glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
       glDepthMask(GL_FALSE);  // every layer shows
       drawVolumes(f, glm::vec4(1.0f, 0.9f, 0.2f, 0.18f));
-      glDepthMask(GL_TRUE);
+      glDepthMask(GL_TRUE);  // depth writes back on
       glDisable(GL_BLEND);
       f.pass("volumes");
     }
@@ -268,7 +268,7 @@ class CutoutExtrusion final : public Lesson {
   // Everything that depends on the options (the lattice, the sphere) is made when they change;
   // everything that depends on the light is made here each frame.
   void prepare(const Frame& f) {
-    const int holes = f.option("holes");
+    const int holes = std::max(1, f.option("holes"));  // the option starts at 0
     if (!logo_ || holes != logoHoles_) {
       logoHoles_ = holes;
       const std::vector<std::string> rows = latticeRows(holes);
@@ -280,7 +280,7 @@ class CutoutExtrusion final : public Lesson {
       doubled_.upload(doubledVertexVolume(
           logo_->welded, silhouetteEdges(logo_->adjacency, facesLight(logo_->welded, fromAbove))));
     }
-    const int slices = std::max(3, f.option("slices"));
+    const int slices = std::max(3, f.option("slices"));  // the fewest a sphere can have
     if (!sphere_ || slices != sphereSlices_) {
       sphereSlices_ = slices;
       sphere_ = std::make_unique<Caster>(makeSphere(kSphereRadius, slices, std::max(2, slices / 2)));
@@ -421,8 +421,8 @@ class CutoutExtrusion final : public Lesson {
       glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);  // drawn last: only where the ground is visible
     }
     drawGround(f, light, on);
-    glStencilMask(0xFF);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glStencilMask(0xFF);                     // every later draw writes all bits again
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);  // and nothing until told
   }
 
   void drawGround(const Frame& f, glm::vec4 light, bool on) {
