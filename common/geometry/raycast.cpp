@@ -268,6 +268,19 @@ std::size_t RayScene::objectCount() const {
   return objects_.size();
 }
 
+std::optional<float> intersectSphere(const Ray& ray, const glm::vec3& centre, float radius, float tMin,
+                                     float tMax) {
+  // |o + t d - c|^2 = r^2: a t^2 + 2 b t + k = 0.
+  const glm::dvec3 d(ray.direction), oc = glm::dvec3(ray.origin) - glm::dvec3(centre);
+  const double a = glm::dot(d, d), b = glm::dot(oc, d), k = glm::dot(oc, oc) - double(radius) * radius;
+  const double discriminant = b * b - a * k;
+  if (!(a > 0.0) || !(discriminant >= 0.0)) return std::nullopt;
+  const double root = std::sqrt(discriminant);
+  for (const double t : {(-b - root) / a, (-b + root) / a})
+    if (t > tMin && t < tMax) return static_cast<float>(t);
+  return std::nullopt;
+}
+
 LightRay rayTowardsLight(const glm::vec3& point, const glm::vec4& light) {
   if (!std::isfinite(light.x) || !std::isfinite(light.y) || !std::isfinite(light.z) ||
       !std::isfinite(light.w)) {

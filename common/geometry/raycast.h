@@ -31,6 +31,12 @@ struct Ray {
 std::optional<float> intersectTriangle(const Ray& ray, const glm::vec3& a, const glm::vec3& b,
                                        const glm::vec3& c, float tMin = 0.0f, float tMax = INFINITY);
 
+// The true sphere, for oracles that judge a tessellated one: the nearest t in (tMin, tMax)
+// where the ray meets the sphere's surface (from outside or inside), else nullopt. Solved in
+// double precision; a ray that only grazes it (a double root) counts as a hit.
+std::optional<float> intersectSphere(const Ray& ray, const glm::vec3& centre, float radius, float tMin = 0.0f,
+                                     float tMax = INFINITY);
+
 struct RayHit {
   float t;
   int object;    // as returned by RayScene::add

@@ -40,8 +40,37 @@ void checkSizes(const std::vector<PixelClass>& oracle, const std::vector<bool>& 
 std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objects, const glm::vec4& light,
                                        const glm::mat4& viewProjection, glm::ivec2 size) {
   RayScene scene;
-  for (const OracleObject& o : objects) scene.add(*o.mesh, o.model);
-  const auto casts = [&](int object) { return objects[static_cast<std::size_t>(object)].casts; };
+  std::vector<std::size_t> objectOf;  // scene object -> index into objects
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    if (objects[i].sphere) continue;
+    scene.add(*objects[i].mesh, objects[i].model);
+    objectOf.push_back(i);
+  }
+  const auto casts = [&](int object) { return objects[objectOf[static_cast<std::size_t>(object)]].casts; };
+  struct Hit {
+    float t;
+    std::size_t object;
+    glm::vec3 normal;
+  };
+  const auto firstHit = [&](const Ray& ray) {
+    std::optional<Hit> best;
+    if (const auto h = scene.firstHit(ray, 0.0f, 1.0f))
+      best = Hit{h->t, objectOf[static_cast<std::size_t>(h->object)], h->normal};
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      if (!objects[i].sphere) continue;
+      const glm::vec4 s = *objects[i].sphere;
+      if (const auto t = intersectSphere(ray, glm::vec3(s), s.w, 0.0f, best ? best->t : 1.0f))
+        best = Hit{*t, i, glm::normalize(ray.origin + *t * ray.direction - glm::vec3(s))};
+    }
+    return best;
+  };
+  const auto occluded = [&](const LightRay& r) {
+    if (scene.occluded(r.ray, 0.0f, r.tMax, casts)) return true;
+    for (const OracleObject& o : objects)
+      if (o.sphere && o.casts && intersectSphere(r.ray, glm::vec3(*o.sphere), o.sphere->w, 0.0f, r.tMax))
+        return true;
+    return false;
+  };
   const glm::dmat4 inverse = glm::inverse(glm::dmat4(viewProjection));
 
   std::vector<PixelClass> classes(static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y));
@@ -49,12 +78,12 @@ std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objects,
     for (int x = 0; x < size.x; ++x) {
       PixelClass& c = classes[static_cast<std::size_t>(y * size.x + x)];
       const Ray ray = cameraRay(inverse, size, x, y);
-      const auto hit = scene.firstHit(ray, 0.0f, 1.0f);
+      const auto hit = firstHit(ray);
       if (!hit) {
         c = PixelClass::Empty;
         continue;
       }
-      if (!objects[static_cast<std::size_t>(hit->object)].receives) {
+      if (!objects[hit->object].receives) {
         c = PixelClass::Other;
         continue;
       }
@@ -63,8 +92,8 @@ std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objects,
       const glm::vec3 point = ray.origin + hit->t * ray.direction;
       const glm::vec3 towardsCamera =
           glm::dot(hit->normal, ray.direction) < 0.0f ? hit->normal : -hit->normal;
-      const LightRay toLight = rayTowardsLight(point + 1e-4f * towardsCamera, light);
-      c = scene.occluded(toLight.ray, 0.0f, toLight.tMax, casts) ? PixelClass::Shadowed : PixelClass::Lit;
+      c = occluded(rayTowardsLight(point + 1e-4f * towardsCamera, light)) ? PixelClass::Shadowed
+                                                                          : PixelClass::Lit;
     }
   return classes;
 }

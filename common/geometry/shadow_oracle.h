@@ -5,6 +5,7 @@
 #pragma once
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <optional>
 #include <vector>
 
 #include "geometry/mesh.h"
@@ -23,6 +24,9 @@ struct OracleObject {
   glm::mat4 model;
   bool casts;     // may block the light
   bool receives;  // its visible pixels are classified lit or shadowed
+  // When set, the true sphere (world centre xyz, radius w) stands in for the mesh, which may then
+  // be null: the reference for a tessellated sphere.
+  std::optional<glm::vec4> sphere = std::nullopt;
 };
 
 // The class of every pixel centre of a size.x by size.y image seen through viewProjection

@@ -57,19 +57,18 @@ std::vector<SilhouetteEdge> silhouetteEdges(const EdgeAdjacency& adjacency, cons
   return silhouette;
 }
 
+std::array<int, 6> extrudedQuadCorners(const glm::vec3& a, const glm::vec3& b) {
+  // The volume lies to the left of a -> b seen from the light, so b, a, a', b' faces out.
+  const bool aFirst = a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+  if (aFirst) return {0, 2, 3, 0, 3, 1};  // a, a', b' and a, b', b
+  return {1, 0, 2, 1, 2, 3};              // b, a, a' and b, a', b'
+}
+
 void addExtrudedEdge(ShadowVolume& volume, const glm::vec3& a, const glm::vec3& b, const glm::vec4& light,
                      float distance) {
-  // The lit face walks a -> b counter-clockwise, so the volume lies to the left of a -> b seen
-  // from the light; the quad b, a, a', b' faces out of it. It is split on the diagonal from the
-  // smaller endpoint (in x, then y, then z): two triangles sharing the edge (polygonVolumes)
-  // then give the same two triangles, and their quads cancel pixel for pixel.
-  const glm::vec4 a4(a, 1.0f), b4(b, 1.0f);
-  const glm::vec4 aFar = extrudeAway(a, light, distance), bFar = extrudeAway(b, light, distance);
-  const bool aFirst = a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
-  if (aFirst)
-    volume.vertices.insert(volume.vertices.end(), {a4, aFar, bFar, a4, bFar, b4});
-  else
-    volume.vertices.insert(volume.vertices.end(), {b4, a4, aFar, b4, aFar, bFar});
+  const glm::vec4 corners[4] = {glm::vec4(a, 1.0f), glm::vec4(b, 1.0f), extrudeAway(a, light, distance),
+                                extrudeAway(b, light, distance)};
+  for (int c : extrudedQuadCorners(a, b)) volume.vertices.push_back(corners[c]);
 }
 
 ShadowVolume silhouetteVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, const glm::vec4& light,

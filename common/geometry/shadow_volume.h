@@ -6,6 +6,7 @@
 // A light is homogeneous, as in planar.h: w = 1 a point light, w = 0 the direction towards a
 // directional light. Give it in the mesh's space (inverse model matrix times the world light).
 #pragma once
+#include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -47,6 +48,12 @@ struct ShadowVolume {
   std::vector<glm::vec4> vertices;
   std::size_t triangleCount() const { return vertices.size() / 3; }
 };
+
+// The quad of edge a -> b (walked by the lit face) as two triangles facing out of the volume,
+// by corner: 0 = a, 1 = b, 2 = a pushed away, 3 = b pushed away. It is split on the diagonal
+// from the smaller endpoint (in x, then y, then z), so the edge walked the other way gives the
+// same two triangles turned round, and the two quads cancel pixel for pixel.
+std::array<int, 6> extrudedQuadCorners(const glm::vec3& a, const glm::vec3& b);
 
 // The quad that extrudes edge a -> b away from the light, as two triangles facing out.
 void addExtrudedEdge(ShadowVolume& volume, const glm::vec3& a, const glm::vec3& b, const glm::vec4& light,

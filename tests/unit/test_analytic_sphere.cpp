@@ -1,0 +1,68 @@
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "geometry/raycast.h"
+#include "geometry/shadow_oracle.h"
+#include "geometry/shapes.h"
+
+namespace {
+
+using namespace stencil;
+
+TEST(IntersectSphere, NearestRootInRange) {
+  const Ray ray{{0, 0, -5}, {0, 0, 1}};
+  ASSERT_TRUE(intersectSphere(ray, {0, 0, 0}, 1.0f).has_value());
+  EXPECT_FLOAT_EQ(*intersectSphere(ray, {0, 0, 0}, 1.0f), 4.0f);
+  EXPECT_FLOAT_EQ(*intersectSphere(ray, {0, 0, 0}, 1.0f, 4.5f), 6.0f) << "from inside: the far root";
+  EXPECT_FALSE(intersectSphere(ray, {0, 0, 0}, 1.0f, 0.0f, 3.9f).has_value()) << "beyond tMax";
+  EXPECT_FALSE(intersectSphere(ray, {0, 2, 0}, 1.0f).has_value()) << "passes by";
+  EXPECT_FALSE(intersectSphere(ray, {0, 0, -10}, 1.0f).has_value()) << "behind the origin";
+}
+
+// A sphere above a ground, light straight above: the oracle with the true sphere shadows a
+// disc, and a coarse mesh sphere (inscribed, so smaller) shadows less of it.
+TEST(OracleSphere, TrueSphereShadowsMoreThanItsInscribedMesh) {
+  const Mesh ground = makePlane(3.0f, 1);
+  const Mesh coarse = makeSphere(1.0f, 6, 3);
+  const glm::mat4 at = glm::translate(glm::mat4(1), {0, 2, 0});
+  const glm::vec4 light(0, 1, 0, 0);
+  const glm::mat4 topDown = glm::ortho(-3.0f, 3.0f, -3.0f, 3.0f, 0.1f, 20.0f) *
+                            glm::lookAt(glm::vec3(0, 10, 0), glm::vec3(0), glm::vec3(0, 0, -1));
+  const glm::ivec2 size(60, 60);
+  const auto count = [&](const std::vector<OracleObject>& objects) {
+    std::size_t shadowed = 0, other = 0;
+    for (const PixelClass c : classifyPixels(objects, light, topDown, size)) {
+      shadowed += c == PixelClass::Shadowed;
+      other += c == PixelClass::Other;
+    }
+    return std::pair{shadowed, other};
+  };
+  // Seen from straight above along the light, the caster hides its whole shadow: what shows is
+  // the caster itself (Other), the true disc larger than the inscribed mesh's hexagon.
+  const auto [trueShadow, trueSeen] = count(
+      {{&ground, glm::mat4(1), false, true}, {nullptr, glm::mat4(1), true, false, glm::vec4(0, 2, 0, 1)}});
+  const auto [meshShadow, meshSeen] =
+      count({{&ground, glm::mat4(1), false, true}, {&coarse, at, true, false}});
+  EXPECT_EQ(trueShadow, 0u) << "straight above, the sphere covers its whole shadow";
+  // The disc of radius 1 covers pi / 36 of the 6x6 view: about 314 of 3600 pixels.
+  EXPECT_NEAR(static_cast<double>(trueSeen), 3600.0 * M_PI / 36.0, 25.0);
+  EXPECT_LT(meshSeen, trueSeen) << "the inscribed hexagonal sphere is smaller";
+  EXPECT_EQ(meshShadow, 0u);
+
+  // Seen at an angle, the shadow shows; the true sphere's is larger.
+  const glm::mat4 slanted = glm::perspective(1.0f, 1.0f, 0.1f, 50.0f) *
+                            glm::lookAt(glm::vec3(0, 6, 7), glm::vec3(0, 0, 0), glm::vec3(0, 1, 0));
+  std::size_t trueShadowed = 0, meshShadowed = 0;
+  for (const PixelClass c : classifyPixels({{&ground, glm::mat4(1), false, true},
+                                            {nullptr, glm::mat4(1), true, false, glm::vec4(0, 2, 0, 1)}},
+                                           light, slanted, size))
+    trueShadowed += c == PixelClass::Shadowed;
+  for (const PixelClass c : classifyPixels({{&ground, glm::mat4(1), false, true}, {&coarse, at, true, false}},
+                                           light, slanted, size))
+    meshShadowed += c == PixelClass::Shadowed;
+  EXPECT_GT(trueShadowed, meshShadowed);
+  EXPECT_GT(meshShadowed, 0u);
+}
+
+}  // namespace
