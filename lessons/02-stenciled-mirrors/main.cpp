@@ -43,6 +43,7 @@ LessonInfo lessonInfo() {
       {"straddle", 'S', "a rod straddling the first mirror's plane (a hard case)", 0},
       {"cut", 'X', "cut the rod at the mirror's plane (the straddle test's reference)", 0},
       {"grazing", 'G', "turn the third mirror almost edge-on to the eye (a hard case)", 0},
+      {"order", 'O', "process the mirrors in reverse order (the picture must not change)", 0},
   };
   info.variants = {
       {"mirrors", "three stenciled mirrors, one in front of another", {}},
@@ -120,7 +121,8 @@ class StenciledMirrors final : public Lesson {
     drawScene(f, mirrors, glm::mat4(1), light, nullptr, -1);
     f.pass("scene");
 
-    for (std::size_t i = 0; i < mirrors.size(); ++i) {
+    for (std::size_t k = 0; k < mirrors.size(); ++k) {
+      const std::size_t i = f.on("order") ? mirrors.size() - 1 - k : k;
       const Mirror& m = mirrors[i];
       const bool stencil = f.on("stencil");
       // ---- 1 tag the mirror's visible pixels ----------------------------------------------
