@@ -100,8 +100,10 @@ void writeSvg(const fs::path& path, const std::vector<Row>& rows) {
         << std::round(maxMs * i / 4 * 10) / 10 << "</text>\n";
   }
   const auto polyline = [&](auto y, auto value, const char* colour, const char* dash) {
-    out << "<polyline fill='none' stroke='" << colour << "' stroke-dasharray='" << dash << "' points='";
-    for (const Row& r : rows) out << x(r.depth) << "," << y(value(r)) << " ";
+    out << "<polyline fill='none' stroke='" << colour << "'"
+        << (*dash ? std::string(" stroke-dasharray='") + dash + "'" : "") << " points='";
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      out << (i ? " " : "") << x(rows[i].depth) << "," << y(value(rows[i]));
     out << "'/>\n";
     for (const Row& r : rows)
       out << "<circle cx='" << x(r.depth) << "' cy='" << y(value(r)) << "' r='3' fill='" << colour << "'/>\n";
