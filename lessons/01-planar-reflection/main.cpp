@@ -34,7 +34,7 @@ LessonInfo lessonInfo() {
   info.options = {
       {"mirror", 'M', "0 a polished floor under the scene (constrained), 1 a free-standing tilted mirror", 0,
        1},
-      {"reflect", 'R', "draw the reflection at all (off: the reference the tests compare with)", 1},
+      {"reflect", 'E', "draw the reflection at all (off: the reference the tests compare with)", 1},
       {"flip", 'L', "flip the cull face for the reflection (off: the reflection turns inside out)", 1},
   };
   info.variants = {

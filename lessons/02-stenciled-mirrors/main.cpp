@@ -37,10 +37,10 @@ LessonInfo lessonInfo() {
   info.options = {
       {"stencil", 'T', "tag each mirror and draw its reflection only on the tag", 1},
       {"clip", 'C', "clip the reflected scene at the mirror's plane (gl_ClipDistance)", 1},
-      {"reflect", 'R', "draw the reflections at all (off: plain glass, the tests' reference)", 1},
+      {"reflect", 'E', "draw the reflections at all (off: plain glass, the tests' reference)", 1},
       {"semi", 'M', "semi-reflective: polished marble blended over the reflection", 0},
       {"mirrors", 'N', "how many of the three mirrors stand in the scene", 3, 3},
-      {"straddle", 'S', "a rod straddling the first mirror's plane (a hard case)", 0},
+      {"straddle", 'D', "a rod straddling the first mirror's plane (a hard case)", 0},
       {"cut", 'X', "cut the rod at the mirror's plane (the straddle test's reference)", 0},
       {"grazing", 'G', "turn the third mirror almost edge-on to the eye (a hard case)", 0},
       {"order", 'O', "process the mirrors in reverse order (the picture must not change)", 0},
@@ -263,7 +263,7 @@ class StenciledMirrors final : public Lesson {
       drawLit(p, box_, reflect * mirrors[j].frameModel(), {0.35f, 0.25f, 0.2f}, 16.0f);
       drawGlass(f, mirrors[j], reflect, light, p);
     }
-    if (!f.on("straddle")) return;
+    if (!f.on("straddle") || mirrors.empty()) return;
     const glm::mat4 rod = reflect * rodModel(mirrors[0]);
     if (f.on("cut") && !clip) {
       // The straddle test's reference: a rod that ends at the first mirror's plane.

@@ -46,7 +46,8 @@ LessonInfo lessonInfo() {
       "first; a hall of mirrors, mirrors that all see each other, culling and the far plane.";
   info.stencilBits = kStencilBits;
   info.options = {
-      {"mirrors", 'N', "mirrors on a regular polygon facing inwards (2: two parallel mirrors)", 2, 6},
+      {"mirrors", 'N',
+       "mirrors on a regular polygon facing inwards (2: two parallel mirrors; 1: one; 0: none)", 2, 6},
       {"depth", 'D', "how many bounces deep (the stencil counts up to 255)", 8, 1000},
       {"culling", 'C', "cull objects and mirrors outside a frustum through each mirror", 1},
       {"far", 'F', "move the far plane out to the deepest reflection drawn", 1},
@@ -350,17 +351,18 @@ class RecursiveMirrors final : public Lesson {
   // ---- the scene -----------------------------------------------------------------------------
 
   // n mirrors on a regular polygon around the origin, facing in; mirror 0 at z = -2 faces +z.
+  // Two face each other across the room; one is mirror 0 alone.
   void setUpScene(const Frame& f) {
     const int n = f.option("mirrors");
     const float pi = glm::pi<float>();
-    const float halfWidth = n == 2 ? 1.6f : kInradius * std::tan(pi / static_cast<float>(n)) - 0.15f;
+    const float halfWidth = n <= 2 ? 1.6f : kInradius * std::tan(pi / static_cast<float>(n)) - 0.15f;
     mirrors_.clear();
     for (int i = 0; i < n; ++i) {
       const float a = 2.0f * pi * static_cast<float>(i) / static_cast<float>(n);
       const glm::vec3 normal(std::sin(a), 0.0f, std::cos(a));
       mirrors_.push_back({glm::vec3(0.0f, 1.05f, 0.0f) - kInradius * normal, normal, halfWidth, 0.9f});
     }
-    const float floorHalf = n == 2 ? kInradius : kInradius / std::cos(pi / static_cast<float>(n));
+    const float floorHalf = n <= 2 ? kInradius : kInradius / std::cos(pi / static_cast<float>(n));
     if (!floor_ || floorHalf != floorHalf_) {
       floor_.emplace(makePlane(floorHalf, 1));
       floorHalf_ = floorHalf;
