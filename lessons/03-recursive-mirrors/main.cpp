@@ -63,8 +63,8 @@ LessonInfo lessonInfo() {
        "the re-renderings of three mirrors, 3 bounces, drawn without the stencil and seen from above",
        {{"mirrors", 3}, {"depth", 3}, {"birds-eye", 1}}},
   };
-  info.passes = {"scene", "reflections", "mark"};
-  info.camera.target = {0.0f, 1.0f, -2.0f};  // on the first mirror
+  info.passes = {"scene", "reflection", "restore", "mark"};  // "reflection": one per level drawn
+  info.camera.target = {0.0f, 1.0f, -2.0f};                  // on the first mirror
   info.camera.distance = 3.7f;
   info.camera.azimuthDeg = 22.0f;
   info.camera.elevationDeg = 8.0f;
@@ -168,10 +168,8 @@ class RecursiveMirrors final : public Lesson {
     }
 
     glEnable(GL_STENCIL_TEST);
-    renderLevel(f, root, /*childrenToo=*/false);
-    f.pass("scene");
-    renderLevel(f, root, /*childrenToo=*/true);
-    f.pass("reflections");
+    renderLevel(f, root);
+    f.pass("restore");  // every level restored: the stencil is 0 again everywhere
 
     // A record of where reflections show, for the stencil view and the measurements: each
     // top-level mirror's visible pixels get its number.
@@ -222,17 +220,14 @@ class RecursiveMirrors final : public Lesson {
     for (const Level& c : childrenOf(f, l)) visit(f, c, each);
   }
 
-  // Level l's scene where the stencil holds l.depth, then (childrenToo) each mirror's deeper
-  // levels. The root is called twice: its scene first, as a pass of its own, then its mirrors.
-  void renderLevel(Frame& f, const Level& l, bool childrenToo) {
+  // Level l's scene where the stencil holds l.depth, then each mirror's deeper levels.
+  void renderLevel(Frame& f, const Level& l) {
     const GLint level = l.depth;
-    if (!childrenToo || l.depth > 0) {
-      glStencilFunc(GL_EQUAL, level, 0xFF);    // only this level's window
-      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);  // drawing the scene changes no level
-      drawScene(f, l);
-      f.count("scene_renderings");
-      if (!childrenToo) return;
-    }
+    glStencilFunc(GL_EQUAL, level, 0xFF);    // only this level's window
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);  // drawing the scene changes no level
+    drawScene(f, l);
+    f.count("scene_renderings");
+    f.pass(l.depth == 0 ? "scene" : "reflection");
     for (const Level& c : childrenOf(f, l)) {
       const Mirror& m = mirrors_[static_cast<std::size_t>(c.mirror)];
       const Program& p = programFor(l);
@@ -259,7 +254,7 @@ class RecursiveMirrors final : public Lesson {
       glDepthRange(0.0, 1.0);
       glDepthFunc(GL_LESS);
 
-      renderLevel(f, c, true);  // the next level, and its own mirrors, depth first
+      renderLevel(f, c);  // the next level, and its own mirrors, depth first
 
       // Restore: the glass's depth back, the tag back to this level.
       glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the reflection is the mirror's colour
