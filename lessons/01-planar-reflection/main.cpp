@@ -95,8 +95,8 @@ class PlanarReflection final : public Lesson {
     glClearColor(kSky.r, kSky.g, kSky.b, kSky.a);
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glEnable(GL_CULL_FACE);  // closed objects, one-sided floor and glass: back faces never show
+    glEnable(GL_DEPTH_TEST);  // nearer surfaces hide farther ones
+    glEnable(GL_CULL_FACE);   // closed objects, one-sided floor and glass: back faces never show
 
     // ---- 1 the reflection: the scene through the plane, everywhere ----------------------------
     if (f.on("reflect")) {

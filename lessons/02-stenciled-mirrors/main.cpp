@@ -116,8 +116,8 @@ class StenciledMirrors final : public Lesson {
     glClearColor(kSky.r, kSky.g, kSky.b, kSky.a);
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glEnable(GL_CULL_FACE);  // closed objects, one-sided floor and glass: back faces never show
+    glEnable(GL_DEPTH_TEST);  // nearer surfaces hide farther ones, in the scene and in each reflection
+    glEnable(GL_CULL_FACE);   // closed objects, one-sided floor and glass: back faces never show
     drawScene(f, mirrors, glm::mat4(1), light, nullptr, -1);
     f.pass("scene");
 
@@ -143,9 +143,9 @@ class StenciledMirrors final : public Lesson {
         glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);  // ...which stays
       }
       glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);  // the sky, where the reflection shows nothing
-      glDepthMask(GL_TRUE);
-      glDepthFunc(GL_ALWAYS);  // overwrite the glass's depth...
-      glDepthRange(1.0, 1.0);  // ...with the far plane's
+      glDepthMask(GL_TRUE);                             // the far depth is written:
+      glDepthFunc(GL_ALWAYS);                           // overwrite the glass's depth...
+      glDepthRange(1.0, 1.0);                           // ...with the far plane's
       flat_.set("transform", f.projection * f.view * m.glassModel());
       flat_.set("colour", kSky);
       glass_.draw();
@@ -171,7 +171,8 @@ class StenciledMirrors final : public Lesson {
         glStencilFunc(GL_EQUAL, kTag, 0xFF);     // only the tag,
         glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);  // which becomes 2: not the tag any more
       }
-      glDepthFunc(GL_ALWAYS);  // the glass's own depth back over the far plane
+      glDepthMask(GL_TRUE);    // the glass's own depth is written back...
+      glDepthFunc(GL_ALWAYS);  // ...over the reflection's
       if (f.on("semi")) {
         glEnable(GL_BLEND);  // the stone over its reflection
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);

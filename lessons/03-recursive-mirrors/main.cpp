@@ -160,24 +160,24 @@ class RecursiveMirrors final : public Lesson {
     glClearColor(kSky.r, kSky.g, kSky.b, kSky.a);
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glEnable(GL_CULL_FACE);  // closed objects, one-sided floor and glass
+    glEnable(GL_DEPTH_TEST);  // nearer surfaces hide farther ones
+    glEnable(GL_CULL_FACE);   // closed objects, one-sided floor and glass
     if (f.on("birds-eye")) {
       renderBirdsEye(f, root);
       return;
     }
 
-    glEnable(GL_STENCIL_TEST);
+    glEnable(GL_STENCIL_TEST);  // the stencil holds the recursion level from here on
     renderLevel(f, root);
     f.pass("restore");  // every level restored: the stencil is 0 again everywhere
 
     // A record of where reflections show, for the stencil view and the measurements: each
     // top-level mirror's visible pixels get its number.
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the picture is finished
-    glDepthMask(GL_FALSE);
-    glDepthFunc(GL_LEQUAL);                     // the glass's depth was restored exactly
-    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);  // its visible pixels get its number
-    glFrontFace(GL_CCW);
+    glDepthMask(GL_FALSE);                                // and changes no depth
+    glDepthFunc(GL_LEQUAL);                               // the glass's depth was restored exactly
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);            // its visible pixels get its number
+    glFrontFace(GL_CCW);                                  // the real mirrors, unreflected
     for (std::size_t i = 0; i < mirrors_.size(); ++i) {
       glStencilFunc(GL_ALWAYS, static_cast<GLint>(i + 1), 0xFF);
       drawGlass(light_, root, mirrors_[i]);
@@ -242,11 +242,11 @@ class RecursiveMirrors final : public Lesson {
       glDisable(GL_CLIP_DISTANCE0);
 
       // Far: the tagged depth to the far plane, the colour to the sky.
-      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-      glDepthMask(GL_TRUE);
-      glDepthFunc(GL_ALWAYS);                    // overwrite the glass's depth...
-      glDepthRange(1.0, 1.0);                    // ...with the far plane's
-      glStencilFunc(GL_EQUAL, level + 1, 0xFF);  // only the tag, which stays
+      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);  // the sky, where the next level shows nothing
+      glDepthMask(GL_TRUE);                             // the far depth is written
+      glDepthFunc(GL_ALWAYS);                           // overwrite the glass's depth...
+      glDepthRange(1.0, 1.0);                           // ...with the far plane's
+      glStencilFunc(GL_EQUAL, level + 1, 0xFF);         // only the tag, which stays
       glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
       flat_.set("transform", viewProjection_ * l.reflect * m.glassModel());
       flat_.set("colour", kSky);
@@ -258,7 +258,8 @@ class RecursiveMirrors final : public Lesson {
 
       // Restore: the glass's depth back, the tag back to this level.
       glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the reflection is the mirror's colour
-      glDepthFunc(GL_ALWAYS);                               // the glass's depth over the far plane
+      glDepthMask(GL_TRUE);                                 // the glass's depth is written...
+      glDepthFunc(GL_ALWAYS);                               // ...over whatever the deeper levels left
       glStencilFunc(GL_EQUAL, level + 1, 0xFF);             // only the tag...
       glStencilOp(GL_KEEP, GL_KEEP, GL_DECR);               // ...which returns to this level
       useLevel(f, l);
@@ -298,8 +299,8 @@ class RecursiveMirrors final : public Lesson {
   // The state a level's draws need: the winding its reflections leave, and its clip plane.
   void useLevel(const Frame& f, const Level& l) const {
     const bool mirrored = glm::determinant(l.reflect) < 0.0f;
-    glFrontFace(mirrored && f.on("flip") ? GL_CW
-                                         : GL_CCW);  // an odd number of reflections turns windings over
+    // An odd number of reflections turns every winding over: front faces become clockwise.
+    glFrontFace(mirrored && f.on("flip") ? GL_CW : GL_CCW);
     if (l.depth > 0 && !f.on("birds-eye"))
       glEnable(GL_CLIP_DISTANCE0);  // only with the shader that writes it
   }
