@@ -102,6 +102,7 @@ class PlanarReflection final : public Lesson {
     if (f.on("reflect")) {
       if (f.on("flip")) glFrontFace(GL_CW);           // det = -1: the mirrored front faces wind clockwise
       drawScene(f, reflect, /*withFloor=*/standing);  // a floor mirror does not reflect itself
+      f.count("scene_renderings");
       glFrontFace(GL_CCW);
     }
     f.pass("reflection");
@@ -128,6 +129,7 @@ class PlanarReflection final : public Lesson {
 
     // ---- 3 the real scene ----------------------------------------------------------------------
     drawScene(f, glm::mat4(1), /*withFloor=*/standing);
+    f.count("scene_renderings");
     glDisable(GL_CULL_FACE);
     f.pass("scene");
   }

@@ -119,6 +119,7 @@ class StenciledMirrors final : public Lesson {
     glEnable(GL_DEPTH_TEST);  // nearer surfaces hide farther ones, in the scene and in each reflection
     glEnable(GL_CULL_FACE);   // closed objects, one-sided floor and glass: back faces never show
     drawScene(f, mirrors, glm::mat4(1), light, nullptr, -1);
+    f.count("scene_renderings");
     f.pass("scene");
 
     for (std::size_t k = 0; k < mirrors.size(); ++k) {
@@ -161,6 +162,7 @@ class StenciledMirrors final : public Lesson {
         const glm::vec4 behind = -m.plane();
         if (f.on("clip")) glEnable(GL_CLIP_DISTANCE0);  // only for the shader that writes it
         drawScene(f, mirrors, reflect, light, f.on("clip") ? &behind : nullptr, static_cast<int>(i));
+        f.count("scene_renderings");
         glDisable(GL_CLIP_DISTANCE0);
         glFrontFace(GL_CCW);
       }
@@ -179,8 +181,8 @@ class StenciledMirrors final : public Lesson {
         drawMarble(f, m, light);
         glDisable(GL_BLEND);
       } else {
-        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE,
-                    GL_FALSE);  // a perfect mirror: the reflection is its colour
+        // A perfect mirror: the reflection is its colour.
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         drawGlass(f, m, glm::mat4(1), light, light_);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
       }

@@ -105,3 +105,13 @@ TEST(StenciledMirrors, AGrazingMirrorShowsAThinReflection) {
   EXPECT_LT(strip, 3000u) << "seen almost edge-on, the mirror should be thin";
   EXPECT_GT(reflected, strip / 4);
 }
+
+// One scene rendering for the real scene and one per mirror, however little of it shows.
+TEST(StenciledMirrors, OneSceneRenderingPerMirror) {
+  for (int n = 0; n <= 3; ++n) {
+    const auto run =
+        runLesson(LESSON_02, "n" + std::to_string(n), "--set mirrors=" + std::to_string(n), true);
+    if (!run) GTEST_SKIP() << "no GL context";
+    EXPECT_EQ(run->count("scene_renderings"), 1 + n);
+  }
+}
