@@ -179,7 +179,7 @@ class RecursiveMirrors final : public Lesson {
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);            // its visible pixels get its number
     glFrontFace(GL_CCW);                                  // the real mirrors, unreflected
     for (std::size_t i = 0; i < mirrors_.size(); ++i) {
-      glStencilFunc(GL_ALWAYS, static_cast<GLint>(i + 1), 0xFF);
+      glStencilFunc(GL_ALWAYS, static_cast<GLint>(i + 1), 0xFF);  // mirror i's number
       drawGlass(light_, root, mirrors_[i]);
     }
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
