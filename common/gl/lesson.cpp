@@ -73,6 +73,10 @@ void Frame::pass(std::string_view name) {
   recorder_.pass(name);
 }
 
+void Frame::count(std::string_view name, std::uint64_t amount) {
+  recorder_.count(name, amount);
+}
+
 // ---- session --------------------------------------------------------------------------
 
 Session::Session(const LessonInfo& lessonInfo, const LessonFactory& factory, const CommandLine& cl,
@@ -197,6 +201,11 @@ std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
       << ", \"triangles\": " << total.triangles << ", \"samples_passed\": " << jsonNumber(total.samplesPassed)
       << ", \"primitives_submitted\": " << jsonNumber(total.primitivesSubmitted)
       << ", \"gpu_ms\": " << jsonNumber(total.gpuMs) << ", \"cpu_ms\": " << jsonNumber(total.cpuMs) << "},\n"
+      << "  \"counts\": {";
+  const auto& counts = s.recorder->counts();
+  for (size_t i = 0; i < counts.size(); ++i)
+    out << (i ? ", " : "") << "\"" << counts[i].first << "\": " << counts[i].second;
+  out << "},\n"
       << "  \"frame_ms\": {\"first\": " << jsonNumber(frameMs.front()) << ", \"mean\": " << jsonNumber(mean)
       << ", \"min\": " << jsonNumber(*std::min_element(steadyBegin, frameMs.end()))
       << ", \"max\": " << jsonNumber(*std::max_element(steadyBegin, frameMs.end())) << "}\n}\n";

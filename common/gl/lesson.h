@@ -3,6 +3,7 @@
 // the backends, the window, stats, snapshots, goldens — is the framework's, the same for
 // every lesson. The stencil, depth, colour-mask and cull calls stay in the lesson.
 #pragma once
+#include <cstdint>
 #include <functional>
 #include <glm/glm.hpp>
 #include <memory>
@@ -82,6 +83,9 @@ class Frame {
   int option(std::string_view name) const;  // unknown names throw: a typo is a bug
   bool on(std::string_view name) const { return option(name) != 0; }
   void pass(std::string_view name);  // marks the end of a named pass
+  // Adds to a named count of the lesson's own (e.g. "scene_renderings"), reported per frame
+  // under "counts" in --stats: work that draw calls and triangles do not show.
+  void count(std::string_view name, std::uint64_t amount = 1);
 
  private:
   const std::vector<Option>& options_;

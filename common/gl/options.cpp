@@ -155,7 +155,7 @@ std::string helpText(const LessonInfo& info, const std::string& program) {
       << "  --passes DIR             colour and stencil after each named pass\n"
       << "  --stats                  JSON on stdout: per pass draw calls, triangles, fragments\n"
       << "                           passed, primitives, GPU and CPU time (null where the driver\n"
-      << "                           has no query for it)\n"
+      << "                           has no query for it), the lesson's own counts\n"
       << "  --quiet                  no context line on stderr\n\n"
       << "  --oracle FILE.png        check the shadows against a CPU ray cast of the same scene,\n"
       << "                           pixel by pixel; exit 1 if they differ off the edges; the\n"

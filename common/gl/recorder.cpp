@@ -44,6 +44,7 @@ void PassRecorder::beginFrame(FrameRequest request) {
   request_ = request;
   stats_.clear();
   snapshots_.clear();
+  counts_.clear();
   checkGlErrors("before the frame");
   beginPass();
 }
@@ -87,6 +88,15 @@ void PassRecorder::pass(std::string_view name) {
     snapshots_.push_back({current_.name, framebuffer_.readColour(), framebuffer_.readStencil()});
   framebuffer_.bind();  // reading may have changed the read binding; keep drawing into ours
   beginPass();
+}
+
+void PassRecorder::count(std::string_view name, std::uint64_t amount) {
+  for (auto& [n, value] : counts_)
+    if (n == name) {
+      value += amount;
+      return;
+    }
+  counts_.emplace_back(name, amount);
 }
 
 void PassRecorder::endFrame() {

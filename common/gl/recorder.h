@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "gl/context.h"
@@ -43,12 +44,15 @@ class PassRecorder {
   ~PassRecorder();
 
   void beginFrame(FrameRequest);
-  void pass(std::string_view name);  // the end of a named pass
-  void endFrame();                   // reads the queries back
+  void pass(std::string_view name);                         // the end of a named pass
+  void count(std::string_view name, std::uint64_t amount);  // a lesson's own count (Frame::count)
+  void endFrame();                                          // reads the queries back
 
   const std::vector<std::string>& declaredPasses() const { return declared_; }
   const std::vector<PassStats>& passStats() const { return stats_; }  // last frame
   const std::vector<Snapshot>& snapshots() const { return snapshots_; }
+  // The lesson's own counts in the last frame, in the order first counted.
+  const std::vector<std::pair<std::string, std::uint64_t>>& counts() const { return counts_; }
 
  private:
   void beginPass();
@@ -63,6 +67,7 @@ class PassRecorder {
   std::vector<PassStats> stats_;
   std::vector<Queries> queries_;  // one set per pass of the frame, reused across frames
   std::vector<Snapshot> snapshots_;
+  std::vector<std::pair<std::string, std::uint64_t>> counts_;
   PassStats current_;
   std::chrono::steady_clock::time_point passStart_;
 };

@@ -101,6 +101,24 @@ TEST_F(Gl, RecorderCountsDrawsTrianglesAndFragments) {
   EXPECT_EQ(recorder.snapshots()[0].colour.at(10, 10)[0], 255);
 }
 
+TEST_F(Gl, RecorderSumsALessonsOwnCountsPerFrame) {
+  Framebuffer fb(8, 8);
+  PassRecorder recorder({"only"}, fb, context->features());
+  fb.bind();
+  recorder.beginFrame({});
+  recorder.count("scene_renderings", 1);
+  recorder.count("mirrors", 3);
+  recorder.count("scene_renderings", 4);
+  recorder.pass("only");
+  recorder.endFrame();
+  using Counts = std::vector<std::pair<std::string, std::uint64_t>>;
+  EXPECT_EQ(recorder.counts(), (Counts{{"scene_renderings", 5}, {"mirrors", 3}}));
+  recorder.beginFrame({});  // every frame counts afresh
+  recorder.pass("only");
+  recorder.endFrame();
+  EXPECT_TRUE(recorder.counts().empty());
+}
+
 TEST_F(Gl, AGlErrorFailsThePassItHappenedIn) {
   Framebuffer fb(8, 8);
   PassRecorder recorder({"broken"}, fb, context->features());

@@ -1,0 +1,232 @@
+// Speed against error for lesson 03: the recursion depth of the hall of mirrors from 0 to 8,
+// each against a deep reference render (16 bounces). The error is the RMS colour difference
+// over the mirror pixels (the reference's final stencil marks them). The time is the mean
+// and the fastest frame, with reflection culling on and off; the plot shows the fastest,
+// which another process on the machine disturbs least. The scene renderings come from the
+// lesson's own count in --stats.
+//
+//   recursive_mirrors_sweep OUT [--quick] [--check]
+//
+// writes OUT.csv and OUT.svg. --quick renders fewer frames per timing; --check exits 1
+// unless the counts are 1 + r with culling and 1 + 2r without, and the error falls with
+// depth (never rising by more than rounding) to under a quarter of depth 0's.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "gl/image.h"
+
+using namespace stencil;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kSize = "640x480";
+constexpr int kMaxDepth = 8, kReferenceDepth = 16;
+
+struct Row {
+  int depth = 0;
+  double frameMs = 0, frameMsNoCulling = 0, rms = 0, maxError = 0;
+  double fastestMs = 0, fastestMsNoCulling = 0;  // the fastest frame: less sensitive to other load
+  long long renderings = 0, renderingsNoCulling = 0, drawCalls = 0, triangles = 0;
+  std::size_t wrongPixels = 0;  // mirror pixels off by more than 5/255 in some channel
+};
+
+void run(const std::string& args) {
+  const std::string command = std::string(LESSON_03) + " --headless --quiet --size " + kSize + " " + args;
+  const int status = std::system(command.c_str());
+  if (status != 0) {
+    std::cerr << "recursive_mirrors_sweep: failed (" << status << "): " << command << "\n";
+    std::exit(WIFEXITED(status) && WEXITSTATUS(status) == 77 ? 77 : 1);
+  }
+}
+
+std::string readAll(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The number after `"key": ` following `after` in the --stats JSON.
+double jsonNumber(const std::string& json, const std::string& after, const std::string& key) {
+  const auto at = json.find("\"" + key + "\": ", json.find(after));
+  if (at == std::string::npos) throw std::runtime_error("no " + key + " in the stats");
+  return std::stod(json.substr(at + key.size() + 4));
+}
+
+std::string depthArgs(int depth) {
+  return "--variant hall --time 1 --set depth=" + std::to_string(depth);
+}
+
+void writeSvg(const fs::path& path, const std::vector<Row>& rows) {
+  const double w = 600, h = 360, left = 60, right = 530, top = 20, bottom = 300;
+  double maxMs = 0, maxRms = 0;
+  for (const Row& r : rows)
+    maxMs = std::max({maxMs, r.frameMs, r.frameMsNoCulling}), maxRms = std::max(maxRms, r.rms);
+  maxMs *= 1.15, maxRms *= 1.15;
+  const auto x = [&](double depth) { return left + (right - left) * depth / kMaxDepth; };
+  const auto yMs = [&](double ms) { return bottom - (bottom - top) * ms / maxMs; };
+  const auto yRms = [&](double e) { return bottom - (bottom - top) * e / maxRms; };
+  std::ofstream out(path);
+  out << "<svg xmlns='http://www.w3.org/2000/svg' width='" << w << "' height='" << h
+      << "' font-family='sans-serif' font-size='11'>\n<rect width='100%' height='100%' fill='white'/>\n"
+      << "<line x1='" << left << "' y1='" << bottom << "' x2='" << right << "' y2='" << bottom
+      << "' stroke='black'/>\n"
+      << "<line x1='" << left << "' y1='" << bottom << "' x2='" << left << "' y2='" << top
+      << "' stroke='#d04020'/>\n"
+      << "<line x1='" << right << "' y1='" << bottom << "' x2='" << right << "' y2='" << top
+      << "' stroke='#3060c0'/>\n"
+      << "<text x='" << (left + right) / 2 << "' y='" << bottom + 35
+      << "' text-anchor='middle'>recursion depth (bounces), hall of mirrors</text>\n"
+      << "<text x='15' y='" << (top + bottom) / 2 << "' transform='rotate(-90 15 " << (top + bottom) / 2
+      << ")' text-anchor='middle' fill='#d04020'>RMS error over the mirror (of 255)</text>\n"
+      << "<text x='" << w - 15 << "' y='" << (top + bottom) / 2 << "' transform='rotate(90 " << w - 15 << " "
+      << (top + bottom) / 2 << ")' text-anchor='middle' fill='#3060c0'>fastest frame of the run (ms, "
+      << kSize << ")</text>\n";
+  for (int d = 0; d <= kMaxDepth; ++d)
+    out << "<text x='" << x(d) << "' y='" << bottom + 15 << "' text-anchor='middle'>" << d << "</text>\n";
+  for (int i = 0; i <= 4; ++i) {
+    out << "<text x='" << left - 5 << "' y='" << yRms(maxRms * i / 4) + 4 << "' text-anchor='end'>"
+        << std::round(maxRms * i / 4 * 10) / 10 << "</text>\n";
+    out << "<text x='" << right + 5 << "' y='" << yMs(maxMs * i / 4) + 4 << "'>"
+        << std::round(maxMs * i / 4 * 10) / 10 << "</text>\n";
+  }
+  const auto polyline = [&](auto y, auto value, const char* colour, const char* dash) {
+    out << "<polyline fill='none' stroke='" << colour << "'"
+        << (*dash ? std::string(" stroke-dasharray='") + dash + "'" : "") << " points='";
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      out << (i ? " " : "") << x(rows[i].depth) << "," << y(value(rows[i]));
+    out << "'/>\n";
+    for (const Row& r : rows)
+      out << "<circle cx='" << x(r.depth) << "' cy='" << y(value(r)) << "' r='3' fill='" << colour << "'/>\n";
+  };
+  polyline(
+      yRms, [](const Row& r) { return r.rms; }, "#d04020", "");
+  polyline(
+      yMs, [](const Row& r) { return r.frameMs; }, "#3060c0", "");
+  polyline(
+      yMs, [](const Row& r) { return r.frameMsNoCulling; }, "#3060c0", "4 3");
+  out << "<text x='" << left + 10 << "' y='" << top + 10 << "' fill='#d04020'>error</text>\n"
+      << "<text x='" << left + 10 << "' y='" << top + 24
+      << "' fill='#3060c0'>fastest frame, culling on (solid) and off (dashed)</text>\n"
+      << "</svg>\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2 || std::string(argv[1]) == "--help") {
+    std::cout << "usage: recursive_mirrors_sweep OUT [--quick] [--check]   (writes OUT.csv and OUT.svg)\n";
+    return argc < 2 ? 2 : 0;
+  }
+  const fs::path out = argv[1];
+  bool quick = false, check = false;
+  for (int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--quick")
+      quick = true;
+    else if (a == "--check")
+      check = true;
+    else {
+      std::cerr << "recursive_mirrors_sweep: unknown flag '" << a << "'\n";
+      return 2;
+    }
+  }
+  const fs::path work = fs::temp_directory_path() / ("recursive-mirrors-sweep-" + std::to_string(getpid()));
+  fs::create_directories(work);
+  fs::create_directories(fs::absolute(out).parent_path());
+
+  std::cerr << "sweep: reference at depth " << kReferenceDepth << "\n";
+  run(depthArgs(kReferenceDepth) + " --out " + (work / "reference.png").string() + " --stencil-out " +
+      (work / "reference-stencil.png").string());
+  const Image reference = readPng(work / "reference.png", 4);
+  const Image mirror = readPng(work / "reference-stencil.raw.png", 1);
+
+  const std::string frames = quick ? "3" : "31";
+  std::vector<Row> rows;
+  for (int depth = 0; depth <= kMaxDepth; ++depth) {
+    Row row;
+    row.depth = depth;
+    const fs::path image = work / "render.png", stats = work / "stats.json";
+    run(depthArgs(depth) + " --out " + image.string());
+    const Image got = readPng(image, 4);
+    double sum = 0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < mirror.pixels.size(); ++i) {
+      if (mirror.pixels[i] == 0) continue;
+      int worst = 0;
+      for (int c = 0; c < 3; ++c) {
+        const int d = std::abs(int(got.pixels[4 * i + c]) - int(reference.pixels[4 * i + c]));
+        sum += double(d) * d;
+        worst = std::max(worst, d);
+      }
+      ++n;
+      row.wrongPixels += worst > 5;
+      row.maxError = std::max(row.maxError, double(worst));
+    }
+    row.rms = std::sqrt(sum / (3.0 * double(n)));
+
+    run(depthArgs(depth) + " --stats --frames " + frames + " > " + stats.string());
+    std::string json = readAll(stats);
+    row.frameMs = jsonNumber(json, "\"frame_ms\"", "mean");
+    row.fastestMs = jsonNumber(json, "\"frame_ms\"", "min");
+    row.renderings = static_cast<long long>(jsonNumber(json, "\"counts\"", "scene_renderings"));
+    row.drawCalls = static_cast<long long>(jsonNumber(json, "\"total\"", "draw_calls"));
+    row.triangles = static_cast<long long>(jsonNumber(json, "\"total\"", "triangles"));
+    run(depthArgs(depth) + " --set culling=0 --stats --frames " + frames + " > " + stats.string());
+    json = readAll(stats);
+    row.frameMsNoCulling = jsonNumber(json, "\"frame_ms\"", "mean");
+    row.fastestMsNoCulling = jsonNumber(json, "\"frame_ms\"", "min");
+    row.renderingsNoCulling = static_cast<long long>(jsonNumber(json, "\"counts\"", "scene_renderings"));
+    std::fprintf(stderr,
+                 "sweep: depth %d  %3lld renderings %7.2f ms  (no culling %3lld, %7.2f ms)  rms %6.2f\n",
+                 depth, row.renderings, row.frameMs, row.renderingsNoCulling, row.frameMsNoCulling, row.rms);
+    rows.push_back(row);
+  }
+
+  std::ofstream csv(out.string() + ".csv");
+  csv << "depth,scene_renderings,frame_ms,fastest_frame_ms,scene_renderings_no_culling,frame_ms_no_culling,"
+         "fastest_frame_ms_no_culling,rms_error,max_error,wrong_pixels,draw_calls,triangles\n";
+  for (const Row& r : rows)
+    csv << r.depth << "," << r.renderings << "," << r.frameMs << "," << r.fastestMs << ","
+        << r.renderingsNoCulling << "," << r.frameMsNoCulling << "," << r.fastestMsNoCulling << "," << r.rms
+        << "," << r.maxError << "," << r.wrongPixels << "," << r.drawCalls << "," << r.triangles << "\n";
+  writeSvg(out.string() + ".svg", rows);
+  fs::remove_all(work);
+  std::cerr << "sweep: wrote " << out.string() << ".csv and .svg\n";
+
+  if (!check) return 0;
+  bool ok = true;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Row& r = rows[i];
+    if (r.renderings != 1 + r.depth || r.renderingsNoCulling != 1 + 2 * r.depth) {
+      std::cerr << "sweep check FAILED: depth " << r.depth << " rendered " << r.renderings
+                << " scenes with culling, " << r.renderingsNoCulling << " without\n";
+      ok = false;
+    }
+    if (i > 0 && r.rms > rows[i - 1].rms + 0.05) {
+      std::cerr << "sweep check FAILED: the error rose from depth " << r.depth - 1 << " to " << r.depth
+                << "\n";
+      ok = false;
+    }
+  }
+  if (!(rows.back().rms < 0.25 * rows.front().rms)) {
+    std::cerr << "sweep check FAILED: depth " << kMaxDepth
+              << " is not much closer to the reference than depth 0\n";
+    ok = false;
+  }
+  if (ok)
+    std::cerr << "sweep check ok: 1 + r renderings with culling, 1 + 2r without; the error falls from "
+              << rows.front().rms << " to " << rows.back().rms << "\n";
+  return ok ? 0 : 1;
+}
