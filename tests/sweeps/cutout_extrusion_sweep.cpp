@@ -27,6 +27,8 @@
 #include <string>
 #include <vector>
 
+#include "sweep_command_line.h"
+
 using namespace std::string_literals;
 namespace fs = std::filesystem;
 
@@ -158,26 +160,11 @@ void writePanel(std::ofstream& out, const Panel& p, double left, double top, dou
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2 || std::string(argv[1]) == "--help") {
-    std::cout << "usage: cutout_extrusion_sweep OUT [--quick] [--check]   (writes OUT.csv and OUT.svg)\n";
-    return argc < 2 ? 2 : 0;
-  }
-  const fs::path out = argv[1];
-  bool quick = false, check = false;
-  for (int i = 2; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--quick")
-      quick = true;
-    else if (a == "--check")
-      check = true;
-    else {
-      std::cerr << "cutout_extrusion_sweep: unknown flag '" << a << "'\n";
-      return 2;
-    }
-  }
-  const fs::path work = fs::temp_directory_path() / ("cutout-extrusion-sweep-" + std::to_string(getpid()));
-  fs::create_directories(work);
-  fs::create_directories(fs::absolute(out).parent_path());
+  int exitCode = 0;
+  const auto commandLine = parseSweepCommandLine("cutout_extrusion_sweep", argc, argv, exitCode);
+  if (!commandLine) return exitCode;
+  const fs::path out = commandLine->out, work = commandLine->work;
+  const bool quick = commandLine->quick, check = commandLine->check;
   const int frames = quick ? 3 : 61;
 
   std::vector<Row> rows;

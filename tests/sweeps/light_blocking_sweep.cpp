@@ -25,6 +25,7 @@
 
 #include "geometry/shadow_oracle.h"
 #include "gl/image.h"
+#include "sweep_command_line.h"
 
 using namespace stencil;
 namespace fs = std::filesystem;
@@ -126,26 +127,11 @@ void writeSvg(const fs::path& path, const std::vector<Row>& rows) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2 || std::string(argv[1]) == "--help") {
-    std::cout << "usage: light_blocking_sweep OUT [--quick] [--check]   (writes OUT.csv and OUT.svg)\n";
-    return argc < 2 ? 2 : 0;
-  }
-  const fs::path out = argv[1];
-  bool quick = false, check = false;
-  for (int i = 2; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--quick")
-      quick = true;
-    else if (a == "--check")
-      check = true;
-    else {
-      std::cerr << "light_blocking_sweep: unknown flag '" << a << "'\n";
-      return 2;
-    }
-  }
-  const fs::path work = fs::temp_directory_path() / ("light-blocking-sweep-" + std::to_string(getpid()));
-  fs::create_directories(work);
-  fs::create_directories(fs::absolute(out).parent_path());
+  int exitCode = 0;
+  const auto commandLine = parseSweepCommandLine("light_blocking_sweep", argc, argv, exitCode);
+  if (!commandLine) return exitCode;
+  const fs::path out = commandLine->out, work = commandLine->work;
+  const bool quick = commandLine->quick, check = commandLine->check;
 
   std::vector<Config> configs = {{"block", "--variant block", true, 0}};
   for (int d = 1; d <= 10; ++d)
