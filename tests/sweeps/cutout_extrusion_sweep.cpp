@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "sweep_command_line.h"
+#include "sweep_support.h"
 
 using namespace std::string_literals;
 namespace fs = std::filesystem;
@@ -44,30 +44,10 @@ struct Row {
   long long wrong = 0, wrongOffEdges = 0, shadowed = 0;
 };
 
-std::string readAll(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // Runs the lesson; exit 1 is allowed where the oracle is expected to report disagreements.
 void run(const std::string& args, bool oracleMayFail = false) {
-  const std::string command = std::string(LESSON_09) + " --headless --quiet --size " + kSize + " " + args;
-  const int status = std::system(command.c_str());
-  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  if (code == 0 || (oracleMayFail && code == 1)) return;
-  std::cerr << "cutout_extrusion_sweep: failed (" << status << "): " << command << "\n";
-  std::exit(code == 77 ? 77 : 1);
-}
-
-// The number after `"key": ` following `after` in the --stats JSON.
-double jsonNumber(const std::string& json, const std::string& after, const std::string& key) {
-  const auto from = json.find(after);
-  if (from == std::string::npos) throw std::runtime_error("no " + after + " in the stats");
-  const auto at = json.find("\"" + key + "\": ", from);
-  if (at == std::string::npos) throw std::runtime_error("no " + key + " in the stats");
-  return std::stod(json.substr(at + key.size() + 4));
+  runOrExit("cutout_extrusion_sweep",
+            std::string(LESSON_09) + " --headless --quiet --size " + kSize + " " + args, oracleMayFail);
 }
 
 // "oracle ok: R receiver pixels, S shadowed; D disagree, E of them on edges (...)"

@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "gl/image.h"
-#include "sweep_command_line.h"
+#include "sweep_support.h"
 
 using namespace stencil;
 namespace fs = std::filesystem;
@@ -43,26 +43,8 @@ struct Row {
 };
 
 void run(const std::string& args) {
-  const std::string command = std::string(LESSON_03) + " --headless --quiet --size " + kSize + " " + args;
-  const int status = std::system(command.c_str());
-  if (status != 0) {
-    std::cerr << "recursive_mirrors_sweep: failed (" << status << "): " << command << "\n";
-    std::exit(WIFEXITED(status) && WEXITSTATUS(status) == 77 ? 77 : 1);
-  }
-}
-
-std::string readAll(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// The number after `"key": ` following `after` in the --stats JSON.
-double jsonNumber(const std::string& json, const std::string& after, const std::string& key) {
-  const auto at = json.find("\"" + key + "\": ", json.find(after));
-  if (at == std::string::npos) throw std::runtime_error("no " + key + " in the stats");
-  return std::stod(json.substr(at + key.size() + 4));
+  runOrExit("recursive_mirrors_sweep",
+            std::string(LESSON_03) + " --headless --quiet --size " + kSize + " " + args);
 }
 
 std::string depthArgs(int depth) {
