@@ -1,6 +1,7 @@
 #include "gl/lesson.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
 #include <iostream>
@@ -49,6 +50,11 @@ glm::mat4 OrbitCamera::view() const {
   return glm::lookAt(eye(), target, glm::vec3(0, 1, 0));
 }
 glm::mat4 OrbitCamera::projection(float aspect) const {
+  if (orthographic) {
+    const float h = 0.5f * orthoHeight, w = h * aspect;
+    return glm::ortho(-w, w, -h, h, nearPlane, farPlane);
+  }
+  if (std::isinf(farPlane)) return glm::infinitePerspective(glm::radians(fovyDeg), aspect, nearPlane);
   return glm::perspective(glm::radians(fovyDeg), aspect, nearPlane, farPlane);
 }
 

@@ -38,7 +38,9 @@ struct OrbitCamera {
   float azimuthDeg = 30.0f;    // around +y, 0 looks down -z
   float elevationDeg = 25.0f;  // above the xz plane
   float fovyDeg = 45.0f;
-  float nearPlane = 0.1f, farPlane = 100.0f;
+  float nearPlane = 0.1f, farPlane = 100.0f;  // farPlane infinite: the far plane at infinity (Pinf)
+  bool orthographic = false;                   // a parallel view orthoHeight world units high
+  float orthoHeight = 10.0f;
 
   glm::vec3 eye() const;
   glm::mat4 view() const;
