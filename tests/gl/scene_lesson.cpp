@@ -4,7 +4,8 @@
 // closed volume (sides, the triangle as the near cap, the triangle pushed to infinity as the far
 // cap), counted z-fail with wrapping operations, the volumes pushed back by a polygon offset so a
 // cap on a visible surface counts as behind it. Slow, but right for open meshes too, as long as
-// no count reaches 256.
+// no count reaches 256. Not right everywhere on the casters themselves: the offset also pushes a
+// volume's side behind a visible face nearly in its plane (a face almost edge-on to the light).
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "geometry/shadow_volume.h"
