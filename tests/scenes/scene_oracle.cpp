@@ -1,12 +1,12 @@
 // Checks a scene lesson's shadows against a CPU ray cast, light by light:
 //
-//   scene_oracle [--expect-failure] LESSON SCENE WxH [TIME]
+//   scene_oracle [--expect-failure] [--variant NAME] LESSON SCENE WxH [TIME]
 //
-// runs LESSON --headless --quiet --scene SCENE --size WxH --time TIME --mask-out DIR, then for
-// each light i compares DIR/light-<i>.png (white: lit) with classifyPixels for that light,
-// seen through the scene's camera as the framework converts it (orbitCameraOf). Only pixels
-// where the ray cast sees a receiver are judged; pixels on an edge of its picture are
-// forgiven. One line per light; exit 0 when all agree, 1 when one does not (with
+// runs LESSON --headless --quiet --scene SCENE --size WxH --time TIME --mask-out DIR (and
+// --variant NAME when given), then for each light i compares DIR/light-<i>.png (white: lit) with
+// classifyPixels for that light, seen through the scene's camera as the framework converts it
+// (orbitCameraOf). Only pixels where the ray cast sees a receiver are judged; pixels on an edge of its
+// picture are forgiven. One line per light; exit 0 when all agree, 1 when one does not (with
 // --expect-failure the other way round: the scene shows an artifact of the lesson), 2 for bad
 // input, 77 when the lesson cannot get a GL context.
 #include <sys/wait.h>
@@ -27,7 +27,7 @@ using namespace stencil;
 
 namespace {
 
-std::string quoted(const std::string& s) {
+std::string shellQuoted(const std::string& s) {
   std::string out = "'";
   for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return out + "'";
@@ -92,12 +92,20 @@ int compareLights(const Scene& scene, const std::filesystem::path& masks, glm::i
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
   bool expectFailure = false;
-  if (!args.empty() && args.front() == "--expect-failure") {
-    expectFailure = true;
+  std::string variant;
+  while (!args.empty() && args.front().starts_with("--")) {
+    if (args.front() == "--expect-failure") {
+      expectFailure = true;
+    } else if (args.front() == "--variant" && args.size() > 1) {
+      args.erase(args.begin());
+      variant = args.front();
+    } else {
+      break;
+    }
     args.erase(args.begin());
   }
   if (args.size() < 3 || args.size() > 4) {
-    std::cerr << "usage: scene_oracle [--expect-failure] LESSON SCENE WxH [TIME]\n";
+    std::cerr << "usage: scene_oracle [--expect-failure] [--variant NAME] LESSON SCENE WxH [TIME]\n";
     return 2;
   }
   const std::string lesson = args[0], sceneFile = args[1], sizeText = args[2];
@@ -120,9 +128,10 @@ int main(int argc, char** argv) {
       ("scene-oracle-" + std::filesystem::path(lesson).filename().string() + "-" +
        std::filesystem::path(sceneFile).stem().string() + "-" + std::to_string(getpid()));
   std::filesystem::remove_all(masks);
-  const std::string command = quoted(lesson) + " --headless --quiet --scene " + quoted(sceneFile) +
-                              " --size " + sizeText + " --time " + std::to_string(time) + " --mask-out " +
-                              quoted(masks.string());
+  const std::string command =
+      shellQuoted(lesson) + " --headless --quiet --scene " + shellQuoted(sceneFile) + " --size " + sizeText +
+      " --time " + std::to_string(time) + " --mask-out " + shellQuoted(masks.string()) +
+      (variant.empty() ? std::string() : std::string(" --variant ") + shellQuoted(variant));
   const int status = std::system(command.c_str());
   if (WIFEXITED(status) && WEXITSTATUS(status) == 77) {
     std::cout << "no GL context: skipped\n";
