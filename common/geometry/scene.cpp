@@ -76,6 +76,13 @@ PreparedCaster prepareCaster(const Mesh& mesh) {
   return result;
 }
 
+std::vector<OracleObject> oracleObjects(const Scene& scene, double time) {
+  std::vector<OracleObject> objects;
+  for (const SceneObject& o : scene.objects)
+    objects.push_back({&o.mesh, o.modelAt(time), o.casts, o.receives});
+  return objects;
+}
+
 glm::mat4 SceneObject::modelAt(double time) const {
   const float t = static_cast<float>(time);
   glm::mat4 m = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, bob * std::sin(t), 0.0f)) * model;

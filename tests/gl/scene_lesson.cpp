@@ -129,10 +129,7 @@ class SceneLesson : public Lesson {
 
   std::optional<ShadowCheck> shadowCheck(const Frame& frame) const override {
     ShadowCheck check;
-    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-      const SceneObject& o = scene_.objects[i];
-      check.objects.push_back({&o.mesh, o.modelAt(frame.time), o.casts, o.receives});
-    }
+    check.objects = oracleObjects(scene_, frame.time);
     check.light = scene_.lights.back().position;  // the stencil holds the last light's shadow
     check.litInStencil = [](std::uint8_t s) { return s == 0; };
     check.judgeReceiversOnly = true;

@@ -45,9 +45,7 @@ int compareLights(const Scene& scene, const std::filesystem::path& masks, glm::i
   const OrbitCamera camera = orbitCameraOf(scene.camera);
   const glm::mat4 viewProjection =
       camera.projection(static_cast<float>(size.x) / static_cast<float>(size.y)) * camera.view();
-  std::vector<OracleObject> objects;
-  for (const SceneObject& o : scene.objects)
-    objects.push_back({&o.mesh, o.modelAt(time), o.casts, o.receives});
+  const std::vector<OracleObject> objects = oracleObjects(scene, time);
   int result = 0;
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const std::string name = "light-" + std::to_string(i);

@@ -139,6 +139,21 @@ TEST(SceneFile, ParametersHaveDefaultsAndTheOrthographicMirroredCamera) {
   EXPECT_EQ(s.objects[0].model, glm::mat4(1.0f));
 }
 
+TEST(SceneFile, TheOracleSeesTheObjectsWhereTheyAreAtThatTime) {
+  const Scene s = parseScene(
+      std::string(header) + "object ground plane\n  casts no\nobject ball sphere\n  bob 0.5\n  receives no\n",
+      "x.scene");
+  const std::vector<OracleObject> objects = oracleObjects(s, 2.0);
+  ASSERT_EQ(objects.size(), 2u);
+  EXPECT_EQ(objects[0].mesh, &s.objects[0].mesh);
+  EXPECT_FALSE(objects[0].casts);
+  EXPECT_TRUE(objects[0].receives);
+  EXPECT_TRUE(objects[1].casts);
+  EXPECT_FALSE(objects[1].receives);
+  EXPECT_FLOAT_EQ(objects[1].model[3][1], 0.5f * std::sin(2.0f));
+  EXPECT_EQ(objects[1].model, s.objects[1].modelAt(2.0));
+}
+
 TEST(SceneFile, EveryMistakeIsOneLineWithFileLineAndWhatWasExpected) {
   const std::string h = header;
   const struct {
