@@ -10,6 +10,7 @@
 #include <string>
 
 #include "geometry/scene.h"
+#include "geometry/shadow_volume.h"
 
 namespace {
 
@@ -257,6 +258,25 @@ TEST(SceneFileObj, AnOpenBoxIsKeptWithItsBorderEdgesReported) {
   EXPECT_TRUE(m.caster.report.usable());
   EXPECT_FALSE(m.caster.report.closed());
   EXPECT_TRUE(mentions(m.caster.report, "open: 4 border edges extrude as silhouette edges"));
+}
+
+// Open meshes are kept, and handled: their border edges are silhouette edges whatever the light.
+TEST(SceneFileObj, AnOpenBoxsBorderEdgesAreOnEverySilhouette) {
+  const Scene s = withMesh("open-box.obj");
+  const PreparedCaster& c = s.objects[0].caster;
+  ASSERT_EQ(c.adjacency.borderEdgeIndices.size(), 4u);
+  for (const glm::vec4& light :
+       {glm::vec4(0, 5, 0, 1), glm::vec4(0, -5, 0, 1), glm::vec4(1, 0.2f, 0.3f, 0)}) {
+    const std::vector<SilhouetteEdge> silhouette = silhouetteEdges(c.adjacency, facesLight(c.mesh, light));
+    for (std::uint32_t e : c.adjacency.borderEdgeIndices) {
+      const Edge& border = c.adjacency.edges[e];
+      const bool found = std::any_of(silhouette.begin(), silhouette.end(), [&](const SilhouetteEdge& edge) {
+        return (edge.v0 == border.v0 && edge.v1 == border.v1) ||
+               (edge.v0 == border.v1 && edge.v1 == border.v0);
+      });
+      EXPECT_TRUE(found) << "border edge " << border.v0 << "-" << border.v1;
+    }
+  }
 }
 
 TEST(SceneFileObj, AnEdgeWithThreeFacesIsRefusedForACaster) {
