@@ -4,7 +4,8 @@
 // light?) then silhouetteEdges (every edge of the prepared caster's adjacency: do its two faces
 // disagree?), on welded spheres and tori of about 1k to 1M triangles. scan: the same arrays
 // (indices, positions, edges) summed, nothing else: how fast the machine can merely read what
-// the extraction reads. The ratio says how far from memory-bound the extraction is.
+// the extraction reads. The ratio says how far from memory-bound the extraction is. The two
+// halves are timed apart too (faces: facesLight alone; edges: silhouetteEdges on its result).
 //
 //   silhouette_benchmark [--quick] [--table FILE.md] [benchmark flags]
 //
@@ -76,6 +77,27 @@ void silhouette(benchmark::State& state, const std::string& shape, const Size& s
   state.counters["silhouette_edges"] = static_cast<double>(edges);
 }
 
+void faces(benchmark::State& state, const std::string& shape, const Size& size) {
+  const PreparedCaster& c = caster(shape, size);
+  for (auto _ : state) {
+    const std::vector<bool> lit = facesLight(c.mesh, light);
+    benchmark::DoNotOptimize(lit);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(c.mesh.triangleCount()));
+  state.counters["triangles"] = static_cast<double>(c.mesh.triangleCount());
+}
+
+void edges(benchmark::State& state, const std::string& shape, const Size& size) {
+  const PreparedCaster& c = caster(shape, size);
+  const std::vector<bool> lit = facesLight(c.mesh, light);
+  for (auto _ : state) {
+    const std::vector<SilhouetteEdge> silhouette = silhouetteEdges(c.adjacency, lit);
+    benchmark::DoNotOptimize(silhouette.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(c.mesh.triangleCount()));
+  state.counters["triangles"] = static_cast<double>(c.mesh.triangleCount());
+}
+
 void scan(benchmark::State& state, const std::string& shape, const Size& size) {
   const PreparedCaster& c = caster(shape, size);
   for (auto _ : state) {
@@ -133,24 +155,28 @@ void writeTable(const TableReporter& reporter, const std::string& file) {
   out << "# Silhouette extraction against a memory scan\n\n"
       << "`facesLight` + `silhouetteEdges` (common/geometry/shadow_volume.h) on welded spheres and tori,\n"
       << "a point light at (3, 4, 5), against summing the same arrays (indices, positions, edges).\n"
-      << "CPU time per call; GB/s counts the bytes of those arrays once per call.\n"
+      << "CPU time per call; GB/s counts the bytes of those arrays once per call. The two halves,\n"
+      << "timed apart: facesLight (indices and positions) and silhouetteEdges (edges and the flags).\n"
       << "Written by `cmake --build build --target silhouette-benchmark` (raw figures in\n"
       << "silhouette-extraction.json).\n\n"
-      << "| shape | triangles | silhouette edges | silhouette ns/triangle | silhouette GB/s | scan "
-         "ns/triangle "
-         "| scan GB/s | silhouette time / scan time |\n"
-      << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+      << "| shape | triangles | silhouette edges | silhouette ns/triangle | of which facesLight | of which "
+         "silhouetteEdges | silhouette GB/s | scan ns/triangle | scan GB/s | silhouette time / scan time |\n"
+      << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const char* shape : {"sphere", "torus"})
     for (const Size& size : sizes) {
       const std::string key = std::string("/") + shape + "/" + size.name;
-      const auto s = reporter.rows.find("silhouette" + key), m = reporter.rows.find("scan" + key);
-      if (s == reporter.rows.end() || m == reporter.rows.end()) continue;
+      const auto s = reporter.rows.find("silhouette" + key), m = reporter.rows.find("scan" + key),
+                 f = reporter.rows.find("faces" + key), e = reporter.rows.find("edges" + key);
+      if (s == reporter.rows.end() || m == reporter.rows.end() || f == reporter.rows.end() ||
+          e == reporter.rows.end())
+        continue;
       const double bytes = static_cast<double>(bytesRead(caster(shape, size)));
       char line[256];
-      std::snprintf(line, sizeof line, "| %s | %.0f | %.0f | %.2f | %.2f | %.3f | %.2f | %.1f |\n", shape,
-                    s->second.triangles, s->second.edges, s->second.ns / s->second.triangles,
-                    bytes / s->second.ns, m->second.ns / m->second.triangles, bytes / m->second.ns,
-                    s->second.ns / m->second.ns);
+      std::snprintf(
+          line, sizeof line, "| %s | %.0f | %.0f | %.2f | %.2f | %.2f | %.2f | %.3f | %.2f | %.1f |\n", shape,
+          s->second.triangles, s->second.edges, s->second.ns / s->second.triangles,
+          f->second.ns / f->second.triangles, e->second.ns / e->second.triangles, bytes / s->second.ns,
+          m->second.ns / m->second.triangles, bytes / m->second.ns, s->second.ns / m->second.ns);
       out << line;
     }
 }
@@ -181,6 +207,8 @@ int main(int argc, char** argv) {
       const std::string key = std::string("/") + shape + "/" + size.name;
       benchmark::RegisterBenchmark(("silhouette" + key).c_str(), silhouette, std::string(shape), size);
       benchmark::RegisterBenchmark(("scan" + key).c_str(), scan, std::string(shape), size);
+      benchmark::RegisterBenchmark(("faces" + key).c_str(), faces, std::string(shape), size);
+      benchmark::RegisterBenchmark(("edges" + key).c_str(), edges, std::string(shape), size);
       if (quick && !closedLoops(caster(shape, size))) {
         std::cerr << shape << " " << size.name << ": the silhouette is not a set of closed loops\n";
         return 1;
