@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <glm/glm.hpp>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -122,6 +123,8 @@ struct ShadowCheck {
   // Shadow-volume lessons keep only the shadow in the stencil; where a receiver is visible is
   // the depth buffer's business. Then only the pixels where the oracle sees a receiver are judged.
   bool judgeReceiversOnly = false;
+  // A bounded point light's reach (SceneLight::radius): beyond it no shadow is claimed.
+  float lightRadius = std::numeric_limits<float>::infinity();
 };
 
 class Lesson {

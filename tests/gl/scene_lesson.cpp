@@ -131,6 +131,7 @@ class SceneLesson : public Lesson {
     ShadowCheck check;
     check.objects = oracleObjects(scene_, frame.time);
     check.light = scene_.lights.back().position;  // the stencil holds the last light's shadow
+    check.lightRadius = scene_.lights.back().radius;
     check.litInStencil = [](std::uint8_t s) { return s == 0; };
     check.judgeReceiversOnly = true;
     return check;

@@ -5,8 +5,9 @@
 // runs LESSON --headless --quiet --scene SCENE --size WxH --time TIME --mask-out DIR (and
 // --variant NAME when given), then for each light i compares DIR/light-<i>.png (white: lit) with
 // classifyPixels for that light, seen through the scene's camera as the framework converts it
-// (orbitCameraOf). Only pixels where the ray cast sees a receiver are judged; pixels on an edge of its
-// picture are forgiven. One line per light; exit 0 when all agree, 1 when one does not (with
+// (orbitCameraOf). Only pixels where the ray cast sees a receiver the light reaches (within a point
+// light's radius) are judged; pixels on an edge of its picture are forgiven. One line per light; exit 0 when
+// all agree, 1 when one does not (with
 // --expect-failure the other way round: the scene shows an artifact of the lesson), 2 for bad
 // input, 77 when the lesson cannot get a GL context.
 #include <sys/wait.h>
@@ -65,7 +66,7 @@ int compareLights(const Scene& scene, const std::filesystem::path& masks, glm::i
       continue;
     }
     const std::vector<PixelClass> oracle =
-        classifyPixels(objects, scene.lights[i].position, viewProjection, size);
+        classifyPixels(objects, scene.lights[i].position, viewProjection, size, scene.lights[i].radius);
     std::vector<bool> lit(oracle.size());
     for (std::size_t p = 0; p < lit.size(); ++p) {
       const bool receiver = oracle[p] == PixelClass::Lit || oracle[p] == PixelClass::Shadowed;
