@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
+#include <iterator>
 #include <regex>
 #include <string>
 
@@ -122,6 +124,21 @@ TEST(SceneFile, AGoodFile) {
     if (o.casts) {
       EXPECT_TRUE(o.caster.report.closed()) << o.name;
     }
+}
+
+// The example at the top of docs/scenes.md reads (its OBJ model replaced by one that exists).
+TEST(SceneFile, TheDocumentedExampleReads) {
+  std::ifstream in(std::filesystem::path(DOCS_DIR) / "scenes.md");
+  const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto begin = doc.find("```\n"), end = doc.find("```", begin + 4);
+  ASSERT_NE(end, std::string::npos);
+  std::string example = doc.substr(begin + 4, end - begin - 4);
+  const std::string model = "models/bunny.obj";
+  ASSERT_NE(example.find(model), std::string::npos);
+  example.replace(example.find(model), model.size(), "meshes/split-cube.obj");
+  const Scene s = parseScene(example, scenes / "example.scene");
+  EXPECT_EQ(s.lights.size(), 2u);
+  EXPECT_EQ(s.objects.size(), 3u);
 }
 
 TEST(SceneFile, ParametersHaveDefaultsAndTheOrthographicMirroredCamera) {
