@@ -11,6 +11,7 @@
 #include <regex>
 #include <string>
 
+#include "geometry/raycast.h"
 #include "geometry/scene.h"
 #include "geometry/shadow_volume.h"
 
@@ -323,6 +324,34 @@ TEST(SceneFileObj, DegenerateTrianglesInsideAClosedMeshAreDropped) {
   EXPECT_EQ(m.caster.mesh.triangleCount(), 12u);
   EXPECT_TRUE(m.caster.report.closed());
   EXPECT_TRUE(mentions(m.caster.report, "dropped 2 degenerate triangles"));
+}
+
+// The staircase's claim, counted: the winding of a caster's shadow volume at a point is the
+// number of times the way to the light enters the caster (crosses a face that faces the light).
+// On the strip in front of the stairs that is 256, one more than 8 bits count; a little further
+// up the slope the ray stays inside the flight and enters it once.
+TEST(SceneFile, TheStaircaseNests256VolumesOnItsStrip) {
+  const Scene s = loadScene(scenes / "hard" / "staircase-256-nested-volumes.scene");
+  const SceneObject& stairs = s.objects[1];
+  ASSERT_EQ(stairs.name, "stairs");
+  const glm::vec4 light = s.lights[0].position;
+  const Mesh world = transformed(stairs.caster.mesh, stairs.model);
+  const std::vector<bool> lit = facesLight(world, light);
+  const auto entries = [&](float x) {
+    const Ray ray{{x, 0.0f, 0.37f}, glm::vec3(light)};  // off the treads' diagonals, which count twice
+    int n = 0;
+    for (std::size_t t = 0; t < world.triangleCount(); ++t) {
+      const std::uint32_t* i = &world.indices[3 * t];
+      if (lit[t] &&
+          intersectTriangle(ray, world.positions[i[0]], world.positions[i[1]], world.positions[i[2]]))
+        ++n;
+    }
+    return n;
+  };
+  EXPECT_EQ(entries(-14.05f), 256);
+  EXPECT_EQ(entries(-14.02f), 256);
+  EXPECT_EQ(entries(-13.9f), 1);
+  EXPECT_EQ(entries(-14.3f), 0) << "in front of the shadow";
 }
 
 // Every hard case is a file that reads: a broken one fails here, not in a lesson's test.
