@@ -66,3 +66,21 @@ TEST(OracleSphere, TrueSphereShadowsMoreThanItsInscribedMesh) {
 }
 
 }  // namespace
+
+// The far plane at infinity (Pinf): the camera ray has no end, so a ground 40 units away is
+// seen; a finite far plane at 20 leaves it out, as GL would clip it.
+TEST(OracleCamera, FarPlaneAtInfinitySeesWhatAFiniteFarPlaneClips) {
+  const Mesh ground = makePlane(100.0f, 1);
+  const glm::mat4 view = glm::lookAt(glm::vec3(0, 40, 0), glm::vec3(0), glm::vec3(0, 0, -1));
+  const glm::ivec2 size(8, 8);
+  const auto receivers = [&](const glm::mat4& projection) {
+    std::size_t n = 0;
+    for (const PixelClass c :
+         classifyPixels({{&ground, glm::mat4(1), false, true}}, {0, 1, 0, 0}, projection * view, size))
+      n += c == PixelClass::Lit;
+    return n;
+  };
+  EXPECT_EQ(receivers(glm::infinitePerspective(1.0f, 1.0f, 1.0f)), 64u);
+  EXPECT_EQ(receivers(glm::perspective(1.0f, 1.0f, 1.0f, 20.0f)), 0u);
+  EXPECT_EQ(receivers(glm::perspective(1.0f, 1.0f, 1.0f, 60.0f)), 64u);
+}
