@@ -104,6 +104,7 @@ LessonInfo lessonInfo() {
       "at infinity or depth clamping, point and directional lights, coloured lights over an ambient pass.";
   info.options = {
       {"zpass", 'Z', "count in front of the surface (z-pass) instead of behind it (z-fail)", 0},
+      {"caps", 'C', "close the volumes with their caps (off: the sides alone, all that z-pass needs)", 1},
       {"depth-clamp", 'D', "GL_DEPTH_CLAMP while counting: nothing beyond the far plane is clipped", 0},
       {"lights", 'N', "how many of the scene's lights shine (1 to 3)", 1, 3},
       {"directional", 'L', "the first light becomes a directional light", 0},
@@ -125,6 +126,7 @@ LessonInfo lessonInfo() {
        {},
        {},
        nearPlaneCamera()},
+      {"zfail-no-caps", "z-fail counting the sides alone: an open volume's count is off", {{"caps", 0}}},
       {"zfail-finite-far",
        "z-fail with a finite far plane: it clips the volumes' far ends, their exits are lost",
        {},
@@ -337,7 +339,9 @@ class RobustZFail final : public Lesson {
       }
       const glm::vec4 light = glm::inverse(models[i]) * worldLight;
       const ClosedVolume v = closedVolume(o.caster.mesh, o.caster.adjacency, light, reach);
-      volumes_[slot]->upload(v.triangles.vertices);
+      std::vector<glm::vec4> vertices = v.triangles.vertices;
+      if (!f.on("caps")) vertices.resize(3 * v.sideTriangles);  // the sides come first
+      volumes_[slot]->upload(vertices);
       f.count("silhouette_edges", v.silhouetteEdges);
       f.count("side_triangles", v.sideTriangles);
       f.count("light_cap_triangles", v.lightCapTriangles);
