@@ -1,5 +1,6 @@
 #include "geometry/shadow_oracle.h"
 
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -9,9 +10,10 @@ namespace stencil {
 
 namespace {
 
-// The camera ray through a pixel centre from the near plane; t in [0, tMax] spans the view
-// frustum. With the far plane at infinity (Pinf) the far plane's point is a direction (w = 0,
-// up to rounding): the ray then goes through the point halfway in depth and has no end.
+// The camera ray through a pixel centre: the centre unprojected at the near and far planes,
+// t in [0, tMax = 1] spanning the view frustum. With the far plane at infinity the far point is
+// a direction (w = 0): the ray then goes through the centre unprojected half way in depth
+// instead, and on without end.
 struct CameraRay {
   Ray ray;
   float tMax;
@@ -19,16 +21,14 @@ struct CameraRay {
 CameraRay cameraRay(const glm::dmat4& inverseViewProjection, glm::ivec2 size, int x, int yTop) {
   const double ndcX = (x + 0.5) / size.x * 2.0 - 1.0;
   const double ndcY = 1.0 - (yTop + 0.5) / size.y * 2.0;
-  const auto unproject = [&](double ndcZ) {
-    return inverseViewProjection * glm::dvec4(ndcX, ndcY, ndcZ, 1.0);
-  };
-  const glm::dvec4 nearPoint = unproject(-1.0), farPoint = unproject(1.0);
+  const glm::dvec4 nearPoint = inverseViewProjection * glm::dvec4(ndcX, ndcY, -1.0, 1.0);
+  const glm::dvec4 farPoint = inverseViewProjection * glm::dvec4(ndcX, ndcY, 1.0, 1.0);
   const glm::dvec3 a = glm::dvec3(nearPoint) / nearPoint.w;
-  if (farPoint.w > 1e-6 * glm::length(glm::dvec3(farPoint))) {
+  if (std::abs(farPoint.w) > 1e-9 * std::abs(nearPoint.w)) {
     const glm::dvec3 b = glm::dvec3(farPoint) / farPoint.w;
     return {{glm::vec3(a), glm::vec3(b - a)}, 1.0f};
   }
-  const glm::dvec4 middle = unproject(0.0);
+  const glm::dvec4 middle = inverseViewProjection * glm::dvec4(ndcX, ndcY, 0.0, 1.0);
   return {{glm::vec3(a), glm::vec3(glm::dvec3(middle) / middle.w - a)},
           std::numeric_limits<float>::infinity()};
 }
