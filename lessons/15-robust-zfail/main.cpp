@@ -106,50 +106,56 @@ LessonInfo lessonInfo() {
       {"zpass", 'Z', "count in front of the surface (z-pass) instead of behind it (z-fail)", 0},
       {"caps", 'C', "close the volumes with their caps (off: the sides alone, all that z-pass needs)", 1},
       {"depth-clamp", 'D', "GL_DEPTH_CLAMP while counting: nothing beyond the far plane is clipped", 0},
-      {"lights", 'N', "how many of the scene's lights shine (1 to 3)", 1, 3},
+      {"lights", 'N', "how many of the scene's lights shine, the first ones (0: all)", 0, 8},
       {"directional", 'L', "the first light becomes a directional light", 0},
-      {"last", 'K', "the light drawn last, whose count the stencil keeps (--oracle checks it)", 0, 2},
+      {"last", 'K', "the light drawn last, whose count the stencil keeps (--oracle checks it)", 0, 8},
       {"shadow", 'H', "shadows at all (off: every light everywhere)", 1},
       {"show", 'X', "draw the volumes translucently and the silhouettes as lines", 0},
   };
   const std::vector<Feature> clamp = {Feature::DepthClamp};
   info.variants = {
-      {"zfail", "z-fail, the far plane at infinity, two-sided wrapping stencil", {}},
-      {"zpass", "z-pass with the same view: where nothing clips, the very same counts", {{"zpass", 1}}},
+      {"zfail", "z-fail, the far plane at infinity, two-sided wrapping stencil", {{"lights", 1}}},
+      {"zpass",
+       "z-pass with the same view: where nothing clips, the very same counts",
+       {{"lights", 1}, {"zpass", 1}}},
       {"zpass-near-plane",
        "z-pass with the near plane cutting the cube's volume: the entries it clips are lost",
-       {{"zpass", 1}},
+       {{"lights", 1}, {"zpass", 1}},
        {},
        nearPlaneCamera()},
       {"zfail-near-plane",
        "the same view with z-fail: nothing behind the surface is clipped",
-       {},
+       {{"lights", 1}},
        {},
        nearPlaneCamera()},
-      {"zfail-no-caps", "z-fail counting the sides alone: an open volume's count is off", {{"caps", 0}}},
+      {"zfail-no-caps",
+       "z-fail counting the sides alone: an open volume's count is off",
+       {{"lights", 1}, {"caps", 0}}},
       {"zfail-finite-far",
        "z-fail with a finite far plane: it clips the volumes' far ends, their exits are lost",
-       {},
+       {{"lights", 1}},
        {},
        finiteFarCamera()},
       {"depth-clamp",
        "the same finite far plane with depth clamping: the far ends are kept",
-       {{"depth-clamp", 1}},
+       {{"lights", 1}, {"depth-clamp", 1}},
        clamp,
        finiteFarCamera()},
       {"orthographic",
        "a parallel view: volumes pushed past the scene, depth-clamped",
-       {{"depth-clamp", 1}},
+       {{"lights", 1}, {"depth-clamp", 1}},
        clamp,
        orthographicCamera()},
-      {"directional", "a directional light: the sides meet at one point at infinity", {{"directional", 1}}},
+      {"directional",
+       "a directional light: the sides meet at one point at infinity",
+       {{"lights", 1}, {"directional", 1}}},
       {"eye-inside",
        "the eye inside the cube's volume: z-fail needs no correction",
-       {},
+       {{"lights", 1}},
        {},
        eyeInsideCamera()},
-      {"coloured-lights", "three coloured lights added over the ambient pass", {{"lights", 3}}},
-      {"show-volumes", "the volumes translucently, the silhouettes as lines", {{"lights", 3}, {"show", 1}}},
+      {"coloured-lights", "three coloured lights added over the ambient pass", {}},
+      {"show-volumes", "the volumes translucently, the silhouettes as lines", {{"show", 1}}},
   };
   info.passes = {"ambient", "volumes", "lit", "show-volumes", "silhouettes"};
   info.camera = pinfCamera();
@@ -208,8 +214,10 @@ void checkRequirements(const Scene& scene) {
 
 class RobustZFail final : public Lesson {
  public:
-  explicit RobustZFail(Scene scene)
-      : scene_(std::move(scene)),
+  // The scene from --scene, or the built-in one.
+  explicit RobustZFail(const Scene* fromFile)
+      : owned_(fromFile ? Scene{} : builtInScene()),
+        scene_(fromFile ? *fromFile : owned_),
         light_("common/light.vert", "common/light.frag"),
         volume_("15-robust-zfail/volume.vert", "common/flat.frag") {
     checkRequirements(scene_);
@@ -221,7 +229,8 @@ class RobustZFail final : public Lesson {
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     const std::vector<glm::mat4> models = modelsAt(f.time);
-    const std::vector<SceneLight> lights = lightsInOrder(f);
+    const std::vector<ShiningLight> lights = lightsInOrder(f);
+    mirroredView_ = glm::determinant(glm::mat3(f.view)) < 0.0f;
 
     // 1. Ambient light everywhere, filling the depth buffer that every later pass tests against.
     glEnable(GL_DEPTH_TEST);
@@ -231,7 +240,7 @@ class RobustZFail final : public Lesson {
     f.pass("ambient");
 
     for (std::size_t i = 0; i < lights.size(); ++i) {
-      buildVolumes(f, models, lights[i].position, i);
+      buildVolumes(f, models, lights[i].light.position, i);
       if (f.on("shadow")) {
         // 2. Count this light's volumes. The stencil starts at zero for each light.
         glClear(GL_STENCIL_BUFFER_BIT);
@@ -254,6 +263,7 @@ class RobustZFail final : public Lesson {
         drawVolumes(f, i, glm::vec4(0));
         glDisable(GL_DEPTH_CLAMP);
         f.pass("volumes");
+        f.shadowMask("light-" + std::to_string(lights[i].index));  // under --mask-out: this light's mask
 
         // 3. This light, added where its count is zero.
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -264,7 +274,7 @@ class RobustZFail final : public Lesson {
       glDepthFunc(GL_EQUAL);  // exactly the visible surfaces of pass 1
       glEnable(GL_BLEND);
       glBlendFunc(GL_ONE, GL_ONE);  // lights add up
-      drawScene(f, models, glm::vec3(0), lights[i].position, lights[i].color);
+      drawScene(f, models, glm::vec3(0), lights[i].light.position, lights[i].light.color);
       glDisable(GL_BLEND);
       glDisable(GL_STENCIL_TEST);
       glDepthFunc(GL_LESS);
@@ -274,13 +284,15 @@ class RobustZFail final : public Lesson {
     glDisable(GL_CULL_FACE);
 
     if (f.on("show")) showVolumes(f, lights);
+    glFrontFace(GL_CCW);
   }
 
   // The light drawn last keeps its count in the stencil. Every visible object receives, the
   // casters included (their unlit sides lie in their own volumes). A count of zero is lit.
   std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
     if (!f.on("shadow")) return std::nullopt;
-    ShadowCheck check{{}, lightsInOrder(f).back().position, [](std::uint8_t s) { return s == 0; }, true};
+    ShadowCheck check{
+        {}, lightsInOrder(f).back().light.position, [](std::uint8_t s) { return s == 0; }, true};
     const std::vector<glm::mat4> models = modelsAt(f.time);
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
       const SceneObject& o = scene_.objects[i];
@@ -296,13 +308,19 @@ class RobustZFail final : public Lesson {
     return models;
   }
 
+  // A light that shines this frame, and its index in the scene (for its mask's name).
+  struct ShiningLight {
+    std::size_t index;
+    SceneLight light;
+  };
+
   // The shining lights, the one named by "last" moved to the end.
-  std::vector<SceneLight> lightsInOrder(const Frame& f) const {
-    const std::size_t n =
-        std::min<std::size_t>(static_cast<std::size_t>(f.option("lights")), scene_.lights.size());
-    std::vector<SceneLight> lights(scene_.lights.begin(),
-                                   scene_.lights.begin() + static_cast<std::ptrdiff_t>(n));
-    if (f.on("directional")) lights[0].position = glm::vec4(0.3f, 1.0f, 0.5f, 0.0f);
+  std::vector<ShiningLight> lightsInOrder(const Frame& f) const {
+    const auto wanted = static_cast<std::size_t>(f.option("lights"));
+    const std::size_t n = wanted == 0 ? scene_.lights.size() : std::min(wanted, scene_.lights.size());
+    std::vector<ShiningLight> lights;
+    for (std::size_t i = 0; i < n; ++i) lights.push_back({i, scene_.lights[i]});
+    if (f.on("directional")) lights[0].light.position = glm::vec4(0.3f, 1.0f, 0.5f, 0.0f);
     const std::size_t last = std::min(static_cast<std::size_t>(f.option("last")), n - 1);
     std::rotate(lights.begin(), lights.begin() + static_cast<std::ptrdiff_t>(last + 1), lights.end());
     return lights;
@@ -356,18 +374,20 @@ class RobustZFail final : public Lesson {
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
       if (!scene_.objects[i].casts) continue;
       volume_.set("model", volumeModels_[i]);
+      frontFaceFor(volumeModels_[i]);
       volumes_[lightIndex * scene_.objects.size() + i]->draw();
     }
   }
 
   // For the classroom: each light's volumes as translucent sheets in its colour, then the
   // silhouette edges they grow from as lines.
-  void showVolumes(Frame& f, const std::vector<SceneLight>& lights) {
+  void showVolumes(Frame& f, const std::vector<ShiningLight>& lights) {
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    for (std::size_t i = 0; i < lights.size(); ++i) drawVolumes(f, i, glm::vec4(lights[i].color, 0.12f));
+    for (std::size_t i = 0; i < lights.size(); ++i)
+      drawVolumes(f, i, glm::vec4(lights[i].light.color, 0.12f));
     glDisable(GL_BLEND);
     f.pass("show-volumes");
 
@@ -378,8 +398,8 @@ class RobustZFail final : public Lesson {
       const SceneObject& o = scene_.objects[c];
       if (!o.casts) continue;
       segments.clear();
-      for (const SceneLight& l : lights) {
-        const glm::vec4 light = glm::inverse(volumeModels_[c]) * l.position;
+      for (const ShiningLight& l : lights) {
+        const glm::vec4 light = glm::inverse(volumeModels_[c]) * l.light.position;
         for (const SilhouetteEdge& e :
              silhouetteEdges(o.caster.adjacency, facesLight(o.caster.mesh, light))) {
           segments.push_back(glm::vec4(o.caster.mesh.positions[e.v0], 1.0f));
@@ -406,11 +426,21 @@ class RobustZFail final : public Lesson {
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
       light_.set("model", models[i]);
       light_.set("colour", scene_.objects[i].color);
+      frontFaceFor(models[i]);
       gpu_[i]->draw();
     }
   }
 
-  Scene scene_;
+  // A mirroring model matrix (a negative scale in a scene file) or a mirrored view turns every
+  // winding round: front faces, for culling and for the two-sided stencil, are then clockwise.
+  void frontFaceFor(const glm::mat4& model) const {
+    const bool mirrored = (glm::determinant(glm::mat3(model)) < 0.0f) != mirroredView_;
+    glFrontFace(mirrored ? GL_CW : GL_CCW);
+  }
+
+  Scene owned_;         // the built-in scene, when there is no file
+  const Scene& scene_;  // the one drawn
+  bool mirroredView_ = false;
   Program light_, volume_;
   std::vector<std::unique_ptr<GpuMesh>> gpu_;
   std::vector<std::unique_ptr<GpuTriangles>> volumes_;  // per light, per object (empty for non-casters)
@@ -421,6 +451,7 @@ class RobustZFail final : public Lesson {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return runLesson(
-      lessonInfo(), [] { return std::make_unique<RobustZFail>(builtInScene()); }, argc, argv);
+  return runSceneLesson(
+      lessonInfo(), [](const Scene* fromFile) { return std::make_unique<RobustZFail>(fromFile); }, argc,
+      argv);
 }
