@@ -235,7 +235,10 @@ class RobustZFail final : public Lesson {
     // 1. Ambient light everywhere, filling the depth buffer that every later pass tests against.
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    glEnable(GL_CULL_FACE);  // every object is closed, or a wall seen from its front
+    // Both sides: where the near plane cuts into a closed object, its inside shows, as the
+    // oracle's ray cast sees it (culled, the background would
+    // show through it).
+    glDisable(GL_CULL_FACE);
     drawScene(f, models, scene_.ambient, glm::vec4(0, 1, 0, 0), glm::vec3(0));
     f.pass("ambient");
 
@@ -247,7 +250,7 @@ class RobustZFail final : public Lesson {
         glEnable(GL_STENCIL_TEST);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the stencil only
         glDepthMask(GL_FALSE);                                // the volumes are not surfaces
-        glDisable(GL_CULL_FACE);                              // both sides in one pass
+        glDisable(GL_CULL_FACE);  // front and back faces of the volumes in one pass
         glStencilFunc(GL_ALWAYS, 0, 0xFF);
         if (f.on("zpass")) {
           // In front of the surface: a front face is an entry, a back face an exit.
@@ -267,7 +270,6 @@ class RobustZFail final : public Lesson {
 
         // 3. This light, added where its count is zero.
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        glEnable(GL_CULL_FACE);
         glStencilFunc(GL_EQUAL, 0, 0xFF);  // outside every volume of this light
         glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
       }
@@ -281,7 +283,6 @@ class RobustZFail final : public Lesson {
       f.pass("lit");
     }
     glDepthMask(GL_TRUE);
-    glDisable(GL_CULL_FACE);
 
     if (f.on("show")) showVolumes(f, lights);
     glFrontFace(GL_CCW);

@@ -1,9 +1,11 @@
 // Lesson 15's claims, measured on its own output: z-pass and z-fail give the same counts where
 // nothing clips; the near plane costs z-pass exactly one entry where it cuts a volume, and the eye
 // inside a volume costs it one everywhere, while z-fail is unaffected; a finite far plane costs
-// z-fail exits, depth clamping gives them back; and --stats reports the closed volumes' parts.
+// z-fail exits, depth clamping gives them back; --stats reports the closed volumes' parts; and a
+// scene file gets one shadow mask per light.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 #include "lesson_run.h"
@@ -131,4 +133,31 @@ TEST(RobustZFail, StatsCountTheClosedVolumesParts) {
   // A directional light's dark cap at infinity is the one point -L: none drawn.
   EXPECT_EQ(directional->count("dark_cap_triangles"), 0);
   EXPECT_LT(directional->count("light_cap_triangles"), caps);
+}
+
+TEST(RobustZFail, ASceneFileGetsAMaskPerLightTheLastOneIsTheFinalStencil) {
+  // The two-light scene file: every light shines (lights=0) and writes its mask after its
+  // volumes are counted; the light drawn last leaves its count in the stencil.
+  const std::string scene = std::string(SCENES_DIR) + "/two-lights.scene";
+  for (int last = 0; last < 2; ++last) {
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    const auto dir = std::filesystem::temp_directory_path() / "stencil-15-robust-zfail" /
+                     (std::string(test->name()) + "-masks-" + std::to_string(last));
+    std::filesystem::remove_all(dir);
+    const auto r = run("last-" + std::to_string(last),
+                       "--scene " + scene + " --set lights=0 --set last=" + std::to_string(last) +
+                           " --mask-out " + dir.string());
+    if (!r) GTEST_SKIP() << "no GL context";
+    ASSERT_TRUE(std::filesystem::exists(dir / "light-0.png"));
+    ASSERT_TRUE(std::filesystem::exists(dir / "light-1.png"));
+    const Image mask = readPng(dir / ("light-" + std::to_string(last) + ".png"), 1);
+    ASSERT_EQ(mask.pixels.size(), r->stencil.pixels.size());
+    std::size_t mismatches = 0, shadowed = 0;
+    for (std::size_t i = 0; i < mask.pixels.size(); ++i) {
+      mismatches += mask.pixels[i] != (r->stencil.pixels[i] == 0 ? 255 : 0);
+      shadowed += mask.pixels[i] == 0;
+    }
+    EXPECT_EQ(mismatches, 0u) << "the last light's mask is the final stencil";
+    EXPECT_GT(shadowed, 1000u);
+  }
 }
