@@ -14,7 +14,8 @@
 //     everywhere and an ideal light: a point or a direction), and Pinf loses only n/f of the
 //     depth range. Or the far plane stays finite and depth clamping keeps what lies beyond it.
 // One pass with two-sided stencil and wrapping counts both kinds of faces. Each light then
-// adds its light where its count is zero, over one ambient pass.
+// adds its light where its count is zero, over one ambient pass. The scene is a Scene
+// (geometry/scene.h): the one built in below, or one read from a file with --scene.
 
 #include <algorithm>
 #include <cmath>
@@ -236,8 +237,7 @@ class RobustZFail final : public Lesson {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     // Both sides: where the near plane cuts into a closed object, its inside shows, as the
-    // oracle's ray cast sees it (culled, the background would
-    // show through it).
+    // oracle's ray cast sees it (culled, the background would show through it).
     glDisable(GL_CULL_FACE);
     drawScene(f, models, scene_.ambient, glm::vec4(0, 1, 0, 0), glm::vec3(0));
     f.pass("ambient");
