@@ -107,4 +107,38 @@ ShadowVolume polygonVolumes(const Mesh& mesh, const glm::vec4& light, float dist
   return volume;
 }
 
+ClosedVolume closedVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, const glm::vec4& light,
+                          float distance) {
+  const AdjacencyReport& r = adjacency.report;
+  if (r.borderEdges != 0 || r.nonManifoldEdges != 0 || r.inconsistentEdges != 0) {
+    throw std::invalid_argument("closedVolume: the caster has " + std::to_string(r.borderEdges) +
+                                " border, " + std::to_string(r.nonManifoldEdges) + " non-manifold and " +
+                                std::to_string(r.inconsistentEdges) +
+                                " inconsistently wound edges; only a closed mesh bounds a closed volume");
+  }
+  const std::vector<bool> lit = facesLight(mesh, light);
+  ClosedVolume closed;
+  ShadowVolume& v = closed.triangles;
+  const std::vector<SilhouetteEdge> silhouette = silhouetteEdges(adjacency, lit);
+  closed.silhouetteEdges = silhouette.size();
+  for (const SilhouetteEdge& e : silhouette)
+    addExtrudedEdge(v, mesh.positions[e.v0], mesh.positions[e.v1], light, distance);
+  closed.sideTriangles = v.triangleCount();
+  // Lit faces face the light, which is out of the volume at its near end.
+  for (std::size_t t = 0; t < lit.size(); ++t)
+    if (lit[t])
+      for (int k = 0; k < 3; ++k)
+        v.vertices.push_back(glm::vec4(mesh.positions[mesh.indices[3 * t + k]], 1.0f));
+  closed.lightCapTriangles = v.triangleCount() - closed.sideTriangles;
+  // Unlit faces face away from the light; pushed along the light's rays they still do, which is
+  // out of the volume at its far end. Each vertex goes where the sides' far corners went.
+  const bool collapses = light.w == 0.0f && std::isinf(distance);
+  for (std::size_t t = 0; t < lit.size() && !collapses; ++t)
+    if (!lit[t])
+      for (int k = 0; k < 3; ++k)
+        v.vertices.push_back(extrudeAway(mesh.positions[mesh.indices[3 * t + k]], light, distance));
+  closed.darkCapTriangles = v.triangleCount() - closed.sideTriangles - closed.lightCapTriangles;
+  return closed;
+}
+
 }  // namespace stencil

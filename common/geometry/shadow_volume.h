@@ -83,4 +83,19 @@ ShadowVolume silhouetteVolume(const CasterEdges& caster, const glm::vec4& light,
 // behind); a closed mesh does not need it, its front faces already cover the back's volumes.
 ShadowVolume polygonVolumes(const Mesh& mesh, const glm::vec4& light, float distance, bool twoSided = false);
 
+// Everitt and Kilgard's closed volume of a closed caster, what z-fail counts: the silhouette
+// edges extruded (the sides), the faces that face the light as they are (the light cap, on the
+// caster's own surface), and the faces that do not, pushed away from the light (the dark cap;
+// to infinity it lies at w = 0). Every triangle faces out. For a directional light pushed to
+// infinity the dark cap shrinks to the single point -L, so it is left out: the sides already
+// meet there. Throws std::invalid_argument unless the mesh is closed, two-manifold and
+// consistently wound (adjacency.h's report): an open volume would leave the count off.
+struct ClosedVolume {
+  ShadowVolume triangles;  // the sides, then the light cap, then the dark cap
+  std::size_t silhouetteEdges = 0;
+  std::size_t sideTriangles = 0, lightCapTriangles = 0, darkCapTriangles = 0;
+};
+ClosedVolume closedVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, const glm::vec4& light,
+                          float distance);
+
 }  // namespace stencil

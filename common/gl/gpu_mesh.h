@@ -1,6 +1,7 @@
 // Geometry uploaded to GL. GpuMesh: a Mesh, positions at attribute 0, normals at attribute 1.
 // GpuTriangles: homogeneous triangles rebuilt on the CPU as the scene moves (shadow volumes),
-// vec4 positions at attribute 0, for shaders/common/volume.vert.
+// vec4 positions at attribute 0, for shaders/common/volume.vert. GpuLines: the same for line
+// segments, two vertices each (silhouette edges shown in the window).
 #pragma once
 #include <cstdint>
 #include <glm/vec4.hpp>
@@ -41,6 +42,23 @@ class GpuTriangles {
   // One draw call, counted by the pass recorder for --stats.
   void draw() const;
   std::uint64_t triangles() const { return static_cast<std::uint64_t>(vertexCount_ / 3); }
+
+ private:
+  GLuint vao_ = 0, buffer_ = 0;
+  GLsizei vertexCount_ = 0;
+};
+
+class GpuLines {
+ public:
+  GpuLines();
+  ~GpuLines();
+  GpuLines(const GpuLines&) = delete;
+  GpuLines& operator=(const GpuLines&) = delete;
+
+  // Replaces the contents: two vertices per segment.
+  void upload(const std::vector<glm::vec4>& vertices);
+  // One draw call, counted by the pass recorder for --stats (as no triangles).
+  void draw() const;
 
  private:
   GLuint vao_ = 0, buffer_ = 0;

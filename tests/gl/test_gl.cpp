@@ -1,7 +1,13 @@
 // The GL glue against a real context (OSMesa where built in, else EGL): the framebuffer's
-// verified stencil, the recorder's counts and snapshots, and GL errors failing a pass.
+// verified stencil, the recorder's counts and snapshots, GL errors failing a pass, and the
+// depth precision a far plane at infinity costs.
 // Without any context the tests are skipped, not passed.
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <iostream>
+#include <limits>
 
 #include "geometry/shapes.h"
 #include "gl/context.h"
@@ -144,4 +150,45 @@ TEST_F(Gl, UndeclaredPassAndDrawsAfterTheLastPassAreBugs) {
   recorder.pass("only");
   quad.draw();
   EXPECT_THROW(recorder.endFrame(), std::logic_error);
+}
+
+// Everitt and Kilgard's far plane at infinity: Pinf maps eye distance d to window depth
+// 1 - n/d, the finite P to f/(f - n) (1 - n/d). So Pinf gives [n, f] the fraction 1 - n/f of
+// the depth range (99% for n = 1, f = 100) and the rest to everything beyond f. Measured by
+// reading back the depth of a plane facing the eye at distance d through each projection.
+TEST_F(Gl, FarPlaneAtInfinityCostsNOverFOfTheDepthRange) {
+  const float n = 1.0f, f = 100.0f;
+  const glm::mat4 p = glm::perspective(glm::radians(90.0f), 1.0f, n, f);
+  const glm::mat4 pinf = glm::infinitePerspective(glm::radians(90.0f), 1.0f, n);
+  Framebuffer fb(8, 8);
+  Program flat("common/flat.vert", "common/flat.frag");
+  GpuMesh quad(makeScreenQuad());
+  fb.bind();
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  const auto depthAt = [&](const glm::mat4& projection, float d) {
+    glClear(GL_DEPTH_BUFFER_BIT);
+    // The screen quad spans [-1, 1]^2; at distance d with a 90 degree view that is d wide.
+    flat.set("transform", projection * glm::scale(glm::translate(glm::mat4(1), {0, 0, -d}), glm::vec3(d)));
+    flat.set("colour", glm::vec4(1));
+    quad.draw();
+    float depth = -1.0f;
+    glReadPixels(4, 4, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &depth);
+    return static_cast<double>(depth);
+  };
+  const double quantum = 1.0 / ((1 << 24) - 1);  // one step of a 24-bit depth buffer
+  // The vertex arithmetic is single precision: a few float epsilons on top of the rounding.
+  const double tolerance = quantum + 4.0 * std::numeric_limits<float>::epsilon();
+  for (float d : {2.0f, 10.0f, 50.0f, 99.0f}) {
+    const double expectP = f / (f - n) * (1.0 - n / d), expectPinf = 1.0 - n / d;
+    EXPECT_NEAR(depthAt(p, d), expectP, tolerance) << "P at " << d;
+    EXPECT_NEAR(depthAt(pinf, d), expectPinf, tolerance) << "Pinf at " << d;
+    EXPECT_NEAR(depthAt(pinf, d) / depthAt(p, d), 1.0 - n / f, 1e-5) << "the ratio at " << d;
+  }
+  const double farDepth = depthAt(pinf, f);  // where P puts 1: the share Pinf gives [n, f]
+  EXPECT_NEAR(farDepth, 1.0 - n / f, tolerance);
+  std::cout << "Pinf (n = 1) puts f = 100 at depth " << farDepth << ": [n, f] gets " << 100.0 * farDepth
+            << "% of the depth range, " << std::llround(farDepth / quantum) << " of the "
+            << std::llround(1.0 / quantum) << " 24-bit steps\n";
+  checkGlErrors("in the test");
 }

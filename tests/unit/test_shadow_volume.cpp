@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <map>
 #include <stdexcept>
+#include <utility>
 
 #include "geometry/adjacency.h"
 #include "geometry/shadow_volume.h"
@@ -19,8 +21,8 @@ Mesh weldedCube() {
 
 // A volume's sides closed by its caps: the lit triangles (near, facing out towards the light)
 // and the same triangles pushed away and turned round (far). Only for finite distances.
-Mesh closedVolume(const Mesh& caster, const std::vector<bool>& lit, const ShadowVolume& sides,
-                  const glm::vec4& light, float distance) {
+Mesh cappedWithLitFaces(const Mesh& caster, const std::vector<bool>& lit, const ShadowVolume& sides,
+                        const glm::vec4& light, float distance) {
   Mesh m;
   auto add = [&m](const glm::vec3& p) {
     m.positions.push_back(p);
@@ -114,7 +116,7 @@ TEST(SilhouetteVolume, DirectionalPrismHasTheDerivedVolumeAndFacesOut) {
   const float d = 3.0f;
   const ShadowVolume sides = silhouetteVolume(cube, adjacency, light, d);
   EXPECT_EQ(sides.triangleCount(), 8u);  // 4 edges, 2 triangles each
-  const Mesh closed = closedVolume(cube, facesLight(cube, light), sides, light, d);
+  const Mesh closed = cappedWithLitFaces(cube, facesLight(cube, light), sides, light, d);
   EXPECT_NEAR(signedVolume(closed), 4.0 * d, 1e-4);
   const Mesh welded = weldByPosition(closed).mesh;
   EXPECT_TRUE(buildEdgeAdjacency(welded.indices, welded.positions.size()).report.closedManifold());
@@ -195,7 +197,8 @@ TEST(PolygonVolumes, UnionOfPerTriangleVolumesHasTheSilhouettesVolume) {
   const float d = 3.0f;
   const ShadowVolume volumes = polygonVolumes(cube, light, d);
   EXPECT_EQ(volumes.triangleCount(), 12u);  // 2 triangles x 3 quads x 2
-  EXPECT_NEAR(signedVolume(closedVolume(cube, facesLight(cube, light), volumes, light, d)), 4.0 * d, 1e-4);
+  EXPECT_NEAR(signedVolume(cappedWithLitFaces(cube, facesLight(cube, light), volumes, light, d)), 4.0 * d,
+              1e-4);
 }
 
 TEST(PolygonVolumes, TwoSidedCutOutCastsFromBehind) {
@@ -209,8 +212,8 @@ TEST(PolygonVolumes, TwoSidedCutOutCastsFromBehind) {
   Mesh flipped = square;
   for (std::size_t t = 0; t < flipped.triangleCount(); ++t)
     std::swap(flipped.indices[3 * t + 1], flipped.indices[3 * t + 2]);
-  EXPECT_NEAR(signedVolume(closedVolume(flipped, facesLight(flipped, below), twoSided, below, 1.0f)), 4.0,
-              1e-4);
+  EXPECT_NEAR(signedVolume(cappedWithLitFaces(flipped, facesLight(flipped, below), twoSided, below, 1.0f)),
+              4.0, 1e-4);
 }
 
 }  // namespace
@@ -229,3 +232,103 @@ TEST(CasterEdges, WeldsTheCreasesAndGivesTheSameVolume) {
 }
 
 }  // namespace
+
+namespace {
+
+// Every directed edge of the triangles walked once the other way too: a closed surface, points
+// at infinity included (a w = 0 vertex is its direction). Returns the edges left unmatched.
+std::size_t unmatchedEdges(const ShadowVolume& v) {
+  std::map<std::pair<std::array<float, 4>, std::array<float, 4>>, int> walked;
+  const auto key = [](const glm::vec4& p) { return std::array<float, 4>{p.x, p.y, p.z, p.w}; };
+  for (std::size_t t = 0; t < v.triangleCount(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const auto a = key(v.vertices[3 * t + k]), b = key(v.vertices[3 * t + (k + 1) % 3]);
+      if (a == b) continue;  // a degenerate triangle's collapsed edge
+      ++walked[{a, b}];
+      --walked[{b, a}];
+    }
+  std::size_t unmatched = 0;
+  for (const auto& [edge, n] : walked) unmatched += n > 0 ? static_cast<std::size_t>(n) : 0;
+  return unmatched;
+}
+
+Mesh asMesh(const ShadowVolume& v) {  // finite volumes only
+  Mesh m;
+  for (const glm::vec4& p : v.vertices) {
+    m.positions.push_back(glm::vec3(p) / p.w);
+    m.indices.push_back(static_cast<std::uint32_t>(m.indices.size()));
+  }
+  return m;
+}
+
+}  // namespace
+
+TEST(ClosedVolume, DirectionalPrismIsTheCubeSweptDown) {
+  // Light straight above the cube [-1,1]^3: the top is the light cap; the four sides (edge-on,
+  // so unlit) and the bottom, pushed d down, the dark cap; the top's outline extruded, the sides.
+  // The closed volume is the box from y = -1 - d to y = 1: 4 (2 + d).
+  const Mesh cube = weldedCube();
+  const EdgeAdjacency adjacency = buildEdgeAdjacency(cube.indices, cube.positions.size());
+  const float d = 3.0f;
+  const ClosedVolume v = closedVolume(cube, adjacency, {0, 1, 0, 0}, d);
+  EXPECT_EQ(v.silhouetteEdges, 4u);
+  EXPECT_EQ(v.sideTriangles, 8u);
+  EXPECT_EQ(v.lightCapTriangles, 2u);
+  EXPECT_EQ(v.darkCapTriangles, 10u);
+  EXPECT_EQ(v.triangles.triangleCount(), 20u);
+  EXPECT_EQ(unmatchedEdges(v.triangles), 0u);
+  EXPECT_NEAR(signedVolume(asMesh(v.triangles)), 4.0 * (2.0 + d), 1e-4);  // positive: faces out
+}
+
+TEST(ClosedVolume, PointLightFiniteEqualsSidesPlusBothCaps) {
+  // A point light off every axis, so no face is edge-on: the caps split the cube's 12 triangles.
+  const Mesh cube = weldedCube();
+  const EdgeAdjacency adjacency = buildEdgeAdjacency(cube.indices, cube.positions.size());
+  const glm::vec4 light(2.5f, 3.0f, 3.5f, 1.0f);  // sees the +x, +y and +z faces
+  const ClosedVolume v = closedVolume(cube, adjacency, light, 4.0f);
+  EXPECT_EQ(v.silhouetteEdges, 6u);  // the hexagon around the three lit faces
+  EXPECT_EQ(v.sideTriangles, 12u);
+  EXPECT_EQ(v.lightCapTriangles, 6u);
+  EXPECT_EQ(v.darkCapTriangles, 6u);
+  EXPECT_EQ(unmatchedEdges(v.triangles), 0u);
+  EXPECT_GT(signedVolume(asMesh(v.triangles)), 8.0);  // the cube and more, facing out
+  const Mesh welded = weldByPosition(asMesh(v.triangles)).mesh;
+  EXPECT_TRUE(buildEdgeAdjacency(welded.indices, welded.positions.size()).report.closedManifold());
+}
+
+TEST(ClosedVolume, ToInfinityTheDarkCapLiesAtWZeroAndStillCloses) {
+  const Mesh cube = weldedCube();
+  const EdgeAdjacency adjacency = buildEdgeAdjacency(cube.indices, cube.positions.size());
+  const glm::vec4 light(2.5f, 3.0f, 3.5f, 1.0f);
+  const ClosedVolume v = closedVolume(cube, adjacency, light, kToInfinity);
+  ASSERT_EQ(v.darkCapTriangles, 6u);
+  const std::size_t darkBegin = 3 * (v.sideTriangles + v.lightCapTriangles);
+  for (std::size_t i = 0; i < v.triangles.vertices.size(); ++i) {
+    const float w = v.triangles.vertices[i].w;
+    if (i >= darkBegin) {
+      EXPECT_EQ(w, 0.0f);  // dark cap: at infinity
+    } else if (i >= 3 * v.sideTriangles) {
+      EXPECT_EQ(w, 1.0f);  // light cap: the faces themselves
+    }
+  }
+  EXPECT_EQ(unmatchedEdges(v.triangles), 0u);
+}
+
+TEST(ClosedVolume, DirectionalToInfinityHasNoDarkCapTheSidesMeetAtOnePoint) {
+  const Mesh cube = weldedCube();
+  const EdgeAdjacency adjacency = buildEdgeAdjacency(cube.indices, cube.positions.size());
+  const glm::vec4 light(0.3f, 1.0f, 0.2f, 0.0f);
+  const ClosedVolume v = closedVolume(cube, adjacency, light, kToInfinity);
+  EXPECT_EQ(v.darkCapTriangles, 0u);
+  for (std::size_t i = 0; i < 3 * v.sideTriangles; ++i)
+    if (v.triangles.vertices[i].w == 0.0f) {
+      EXPECT_EQ(v.triangles.vertices[i], -light);
+    }
+  EXPECT_EQ(unmatchedEdges(v.triangles), 0u);  // the sides' cone and the light cap close it
+}
+
+TEST(ClosedVolume, RefusesAnOpenMesh) {
+  const Mesh square = makePlane(1.0f);
+  const EdgeAdjacency adjacency = buildEdgeAdjacency(square.indices, square.positions.size());
+  EXPECT_THROW(closedVolume(square, adjacency, {0, 1, 0, 0}, kToInfinity), std::invalid_argument);
+}

@@ -1,0 +1,163 @@
+// Lesson 15's claims, measured on its own output: z-pass and z-fail give the same counts where
+// nothing clips; the near plane costs z-pass exactly one entry where it cuts a volume, and the eye
+// inside a volume costs it one everywhere, while z-fail is unaffected; a finite far plane costs
+// z-fail exits, depth clamping gives them back; --stats reports the closed volumes' parts; and a
+// scene file gets one shadow mask per light.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "lesson_run.h"
+
+using namespace stencil;
+using stencil::testing::LessonRun;
+using stencil::testing::runLesson;
+
+namespace {
+
+std::optional<LessonRun> run(const std::string& name, const std::string& args, bool stats = false) {
+  return runLesson(LESSON_15, name, args, stats);
+}
+
+// Pixels where b's count differs from a's, and how many of them by exactly `delta` (mod 256).
+struct Difference {
+  std::size_t pixels = 0, byDelta = 0;
+};
+Difference difference(const Image& a, const Image& b, int delta) {
+  Difference d;
+  EXPECT_EQ(a.pixels.size(), b.pixels.size());
+  for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+    if (a.pixels[i] == b.pixels[i]) continue;
+    ++d.pixels;
+    d.byDelta += static_cast<std::uint8_t>(a.pixels[i] + delta) == b.pixels[i];
+  }
+  return d;
+}
+
+// Whether the scene covers pixel i: anything but the clear colour (26, 26, 33).
+bool drawnAt(const LessonRun& r, std::size_t i) {
+  const std::uint8_t* p = &r.colour.pixels[4 * i];
+  return !(p[0] == 26 && p[1] == 26 && p[2] == 33);
+}
+
+// Whether a pixel of the 3x3 neighbourhood of pixel i has another count.
+bool onCountEdge(const Image& stencil, std::size_t i) {
+  const int x = static_cast<int>(i) % stencil.width, y = static_cast<int>(i) / stencil.width;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const int nx = x + dx, ny = y + dy;
+      if (nx < 0 || ny < 0 || nx >= stencil.width || ny >= stencil.height) continue;
+      if (stencil.pixels[static_cast<std::size_t>(ny * stencil.width + nx)] != stencil.pixels[i]) return true;
+    }
+  return false;
+}
+
+}  // namespace
+
+TEST(RobustZFail, ZPassAndZFailCountTheSameWhereNothingClips) {
+  const auto zfail = run("zfail", "--variant zfail");
+  const auto zpass = run("zpass", "--variant zpass");
+  if (!zfail || !zpass) GTEST_SKIP() << "no GL context";
+  EXPECT_EQ(difference(zfail->stencil, zpass->stencil, 0).pixels, 0u);
+  std::size_t shadowed = 0;
+  for (std::uint8_t s : zfail->stencil.pixels) shadowed += s != 0;
+  EXPECT_GT(shadowed, 1000u) << "a scene with shadows to compare";
+}
+
+TEST(RobustZFail, TheNearPlaneCostsZPassOneEntryWhereItCutsAVolume) {
+  // The same view: z-fail is right (the oracle says so); z-pass loses the entry of every ray that
+  // starts inside the cube's volume, so its count is one lower there and equal elsewhere.
+  const auto zfail = run("zfail", "--variant zfail-near-plane");
+  const auto zpass = run("zpass", "--variant zpass-near-plane");
+  if (!zfail || !zpass) GTEST_SKIP() << "no GL context";
+  const Difference d = difference(zfail->stencil, zpass->stencil, -1);
+  EXPECT_GT(d.pixels, 5000u);
+  EXPECT_EQ(d.byDelta, d.pixels) << "every wrong pixel lost exactly one entry";
+}
+
+TEST(RobustZFail, TheEyeInsideAVolumeCostsZPassOneEverywhereNotZFail) {
+  const auto zfail = run("zfail", "--variant eye-inside");
+  const auto zpass = run("zpass", "--variant eye-inside --set zpass=1");
+  if (!zfail || !zpass) GTEST_SKIP() << "no GL context";
+  const Difference d = difference(zfail->stencil, zpass->stencil, -1);
+  EXPECT_EQ(d.pixels, zfail->stencil.pixels.size())
+      << "z-pass subtracts the volume the eye is in, everywhere";
+  EXPECT_EQ(d.byDelta, d.pixels);
+}
+
+TEST(RobustZFail, AFiniteFarPlaneCostsZFailExitsDepthClampGivesThemBack) {
+  // Behind the ground the volumes go on; a far plane clips their exits (INCR on back faces), so
+  // the count comes out lower, never higher. Depth clamping keeps them: the counts of Pinf,
+  // wherever the scene was drawn. (Over the empty background the counts mean nothing: there
+  // clamped fragments at depth 1 fail where Pinf's nearer ones pass.)
+  const auto pinf = run("pinf", "--variant zfail");
+  const auto finite = run("finite", "--variant zfail-finite-far");
+  const auto clamped = run("clamped", "--variant depth-clamp");
+  if (!pinf || !finite || !clamped) GTEST_SKIP() << "no GL context";
+  std::size_t lower = 0, higher = 0;
+  for (std::size_t i = 0; i < pinf->stencil.pixels.size(); ++i) {
+    const int lost = static_cast<std::uint8_t>(pinf->stencil.pixels[i] - finite->stencil.pixels[i]);
+    lower += lost > 0 && lost < 128;
+    higher += lost >= 128;
+  }
+  EXPECT_GT(lower, 2000u);
+  EXPECT_EQ(higher, 0u);
+  std::size_t drawn = 0, differ = 0;
+  for (std::size_t i = 0; i < pinf->stencil.pixels.size(); ++i) {
+    if (!drawnAt(*pinf, i)) continue;
+    ++drawn;
+    if (pinf->stencil.pixels[i] == clamped->stencil.pixels[i]) continue;
+    ++differ;
+    // The two projections give other depths, so a tie on a shadow's or a caster's edge may go
+    // either way; nowhere else.
+    EXPECT_TRUE(onCountEdge(pinf->stencil, i)) << "at pixel " << i;
+  }
+  EXPECT_GT(drawn, 50000u);
+  EXPECT_LT(differ, 10u);
+}
+
+TEST(RobustZFail, StatsCountTheClosedVolumesParts) {
+  const auto one = run("one", "--variant zfail", true);
+  const auto three = run("three", "--variant coloured-lights", true);
+  const auto directional = run("directional", "--variant directional", true);
+  if (!one || !three || !directional) GTEST_SKIP() << "no GL context";
+  for (const LessonRun* r : {&*one, &*three, &*directional}) {
+    // A silhouette edge extrudes into one quad: two triangles.
+    EXPECT_EQ(r->count("side_triangles"), 2 * r->count("silhouette_edges"));
+    EXPECT_GT(r->count("light_cap_triangles"), 0);
+  }
+  // Every caster triangle faces a point light or not: the two caps hold each triangle once per light.
+  const long long caps = one->count("light_cap_triangles") + one->count("dark_cap_triangles");
+  EXPECT_EQ(three->count("light_cap_triangles") + three->count("dark_cap_triangles"), 3 * caps);
+  // A directional light's dark cap at infinity is the one point -L: none drawn.
+  EXPECT_EQ(directional->count("dark_cap_triangles"), 0);
+  EXPECT_LT(directional->count("light_cap_triangles"), caps);
+}
+
+TEST(RobustZFail, ASceneFileGetsAMaskPerLightTheLastOneIsTheFinalStencil) {
+  // The two-light scene file: every light shines (lights=0) and writes its mask after its
+  // volumes are counted; the light drawn last leaves its count in the stencil.
+  const std::string scene = std::string(SCENES_DIR) + "/two-lights.scene";
+  for (int last = 0; last < 2; ++last) {
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    const auto dir = std::filesystem::temp_directory_path() / "stencil-15-robust-zfail" /
+                     (std::string(test->name()) + "-masks-" + std::to_string(last));
+    std::filesystem::remove_all(dir);
+    const auto r = run("last-" + std::to_string(last),
+                       "--scene " + scene + " --set lights=0 --set last=" + std::to_string(last) +
+                           " --mask-out " + dir.string());
+    if (!r) GTEST_SKIP() << "no GL context";
+    ASSERT_TRUE(std::filesystem::exists(dir / "light-0.png"));
+    ASSERT_TRUE(std::filesystem::exists(dir / "light-1.png"));
+    const Image mask = readPng(dir / ("light-" + std::to_string(last) + ".png"), 1);
+    ASSERT_EQ(mask.pixels.size(), r->stencil.pixels.size());
+    std::size_t mismatches = 0, shadowed = 0;
+    for (std::size_t i = 0; i < mask.pixels.size(); ++i) {
+      mismatches += mask.pixels[i] != (r->stencil.pixels[i] == 0 ? 255 : 0);
+      shadowed += mask.pixels[i] == 0;
+    }
+    EXPECT_EQ(mismatches, 0u) << "the last light's mask is the final stencil";
+    EXPECT_GT(shadowed, 1000u);
+  }
+}
