@@ -38,7 +38,7 @@ void checkSizes(const std::vector<PixelClass>& oracle, const std::vector<bool>& 
 }  // namespace
 
 std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objects, const glm::vec4& light,
-                                       const glm::mat4& viewProjection, glm::ivec2 size) {
+                                       const glm::mat4& viewProjection, glm::ivec2 size, float lightRadius) {
   RayScene scene;
   std::vector<std::size_t> objectOf;  // scene object -> index into objects
   for (std::size_t i = 0; i < objects.size(); ++i) {
@@ -90,6 +90,10 @@ std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objects,
       // Start the shadow ray a hair off the surface, on the side the camera sees, so the
       // receiver does not shadow itself through rounding.
       const glm::vec3 point = ray.origin + hit->t * ray.direction;
+      if (light.w != 0.0f && glm::length(point - glm::vec3(light) / light.w) > lightRadius) {
+        c = PixelClass::Other;
+        continue;
+      }
       const glm::vec3 towardsCamera =
           glm::dot(hit->normal, ray.direction) < 0.0f ? hit->normal : -hit->normal;
       c = occluded(rayTowardsLight(point + 1e-4f * towardsCamera, light)) ? PixelClass::Shadowed

@@ -5,6 +5,7 @@
 #pragma once
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -31,9 +32,12 @@ struct OracleObject {
 
 // The class of every pixel centre of a size.x by size.y image seen through viewProjection
 // (GL's conventions: clip space -1..1), top row first like Image. Cast shadows only: a
-// receiver facing away from the light is still Lit unless a caster is in the way.
+// receiver facing away from the light is still Lit unless a caster is in the way. A point light
+// with a finite radius reaches nothing beyond it: a receiver there is Other, neither lit nor
+// shadowed by that light.
 std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>&, const glm::vec4& light,
-                                       const glm::mat4& viewProjection, glm::ivec2 size);
+                                       const glm::mat4& viewProjection, glm::ivec2 size,
+                                       float lightRadius = std::numeric_limits<float>::infinity());
 
 struct OracleReport {
   std::size_t receiverPixels = 0;  // Lit or Shadowed by the oracle

@@ -231,7 +231,8 @@ bool checkShadows(const Session& s, const Image& stencil) {
                      "' to check with --oracle");
   const ShadowCheck& check = *s.shadowCheck;
   const glm::ivec2 size{stencil.width, stencil.height};
-  const std::vector<PixelClass> oracle = classifyPixels(check.objects, check.light, s.viewProjection, size);
+  const std::vector<PixelClass> oracle =
+      classifyPixels(check.objects, check.light, s.viewProjection, size, check.lightRadius);
   std::vector<bool> lit(stencil.pixels.size());
   for (std::size_t i = 0; i < lit.size(); ++i) {
     const bool receiver = oracle[i] == PixelClass::Lit || oracle[i] == PixelClass::Shadowed;

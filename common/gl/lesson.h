@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <glm/glm.hpp>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -39,7 +40,7 @@ struct OrbitCamera {
   float elevationDeg = 25.0f;  // above the xz plane
   float fovyDeg = 45.0f;
   float nearPlane = 0.1f, farPlane = 100.0f;  // farPlane infinite: the far plane at infinity (Pinf)
-  bool orthographic = false;                   // a parallel view orthoHeight world units high
+  bool orthographic = false;                  // a parallel view orthoHeight world units high
   float orthoHeight = 10.0f;
 
   glm::vec3 eye() const;
@@ -104,6 +105,8 @@ struct ShadowCheck {
   // Shadow-volume lessons keep only the shadow in the stencil; where a receiver is visible is
   // the depth buffer's business. Then only the pixels where the oracle sees a receiver are judged.
   bool judgeReceiversOnly = false;
+  // A point light's bounds: receivers beyond them get none of its light and are not judged.
+  float lightRadius = std::numeric_limits<float>::infinity();
 };
 
 class Lesson {

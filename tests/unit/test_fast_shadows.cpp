@@ -8,6 +8,7 @@
 
 #include "geometry/adjacency.h"
 #include "geometry/fast_shadows.h"
+#include "geometry/shadow_oracle.h"
 #include "geometry/shapes.h"
 #include "geometry/weld.h"
 
@@ -211,6 +212,23 @@ TEST(LightBounds, CullingAndScissor) {
   EXPECT_EQ(around.height, 100);
   EXPECT_EQ(lightScissor({0, 0, 10}, 1.0f, vp, size).width, 0);    // behind the camera
   EXPECT_EQ(lightScissor({50, 0, -10}, 1.0f, vp, size).width, 0);  // beside the view
+}
+
+// The oracle for a bounded light: a receiver beyond the radius is neither lit nor shadowed.
+TEST(LightBounds, TheOracleJudgesOnlyWithinTheRadius) {
+  const Mesh ground = makePlane(3.0f, 1);
+  const glm::mat4 topDown = glm::ortho(-3.0f, 3.0f, -3.0f, 3.0f, 0.1f, 20.0f) *
+                            glm::lookAt(glm::vec3(0, 10, 0), glm::vec3(0), glm::vec3(0, 0, -1));
+  const glm::vec4 light(0, 1, 0, 1);  // one above the ground's centre
+  const float radius = 2.0f;          // reaches a disc of radius sqrt(3) on the ground
+  std::size_t lit = 0, other = 0;
+  for (const PixelClass c :
+       classifyPixels({{&ground, glm::mat4(1), false, true}}, light, topDown, {60, 60}, radius)) {
+    lit += c == PixelClass::Lit;
+    other += c == PixelClass::Other;
+  }
+  EXPECT_NEAR(static_cast<double>(lit), 3600.0 * M_PI * 3.0 / 36.0, 40.0);
+  EXPECT_EQ(lit + other, 3600u);
 }
 
 TEST(WorldBounds, FollowsARigidMotion) {
