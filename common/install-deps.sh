@@ -11,7 +11,8 @@ packages=(
   libegl-dev libegl-mesa0 libgl1-mesa-dri  # EGL headless contexts (llvmpipe without a GPU)
   libgl1 libglx-mesa0                # GLX for the window (GLFW loads libGL at run time)
   libglfw3-dev libimgui-dev          # the window and its panel
-  libgtest-dev                       # unit tests
+  libtinyobjloader-dev               # OBJ meshes in scene files
+  libgtest-dev libbenchmark-dev      # unit tests, micro-benchmarks
   xvfb xauth                         # the window test runs under a virtual display
 )
 optional=(libosmesa6-dev)            # newer Mesa releases dropped OSMesa; EGL then serves

@@ -57,7 +57,7 @@ struct SceneLight {
 
 struct SceneObject {
   std::string name;
-  Mesh mesh;         // object space, with normals, as drawn
+  Mesh mesh;  // object space, with normals, as drawn
   glm::mat4 model{1.0f};
   glm::vec3 color{0.8f};
   bool casts = true, receives = true;
@@ -77,6 +77,7 @@ struct SceneCamera {
   float farPlane = std::numeric_limits<float>::infinity();  // the lesson decides what infinity means
   bool orthographic = false;
   float orthoHeight = 10.0f;  // the view's height in world units, when orthographic
+  bool mirrored = false;      // the picture flipped left to right (a view with negative determinant)
 };
 
 struct Scene {

@@ -1,5 +1,7 @@
 #include "geometry/shadow_oracle.h"
 
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "geometry/raycast.h"
@@ -8,14 +10,27 @@ namespace stencil {
 
 namespace {
 
-// The camera ray through a pixel centre: the centre unprojected at the near and far planes.
-Ray cameraRay(const glm::dmat4& inverseViewProjection, glm::ivec2 size, int x, int yTop) {
+// The camera ray through a pixel centre: the centre unprojected at the near and far planes,
+// t in [0, tMax = 1] spanning the view frustum. With the far plane at infinity the far point is
+// a direction (w = 0): the ray then goes through the centre unprojected half way in depth
+// instead, and on without end.
+struct CameraRay {
+  Ray ray;
+  float tMax;
+};
+CameraRay cameraRay(const glm::dmat4& inverseViewProjection, glm::ivec2 size, int x, int yTop) {
   const double ndcX = (x + 0.5) / size.x * 2.0 - 1.0;
   const double ndcY = 1.0 - (yTop + 0.5) / size.y * 2.0;
   const glm::dvec4 nearPoint = inverseViewProjection * glm::dvec4(ndcX, ndcY, -1.0, 1.0);
   const glm::dvec4 farPoint = inverseViewProjection * glm::dvec4(ndcX, ndcY, 1.0, 1.0);
-  const glm::dvec3 a = glm::dvec3(nearPoint) / nearPoint.w, b = glm::dvec3(farPoint) / farPoint.w;
-  return {glm::vec3(a), glm::vec3(b - a)};  // t in [0, 1] spans the view frustum
+  const glm::dvec3 a = glm::dvec3(nearPoint) / nearPoint.w;
+  if (std::abs(farPoint.w) > 1e-9 * std::abs(nearPoint.w)) {
+    const glm::dvec3 b = glm::dvec3(farPoint) / farPoint.w;
+    return {{glm::vec3(a), glm::vec3(b - a)}, 1.0f};
+  }
+  const glm::dvec4 middle = inverseViewProjection * glm::dvec4(ndcX, ndcY, 0.0, 1.0);
+  return {{glm::vec3(a), glm::vec3(glm::dvec3(middle) / middle.w - a)},
+          std::numeric_limits<float>::infinity()};
 }
 
 bool onEdge(const std::vector<PixelClass>& oracle, glm::ivec2 size, int x, int y) {
@@ -52,14 +67,14 @@ std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objects,
     std::size_t object;
     glm::vec3 normal;
   };
-  const auto firstHit = [&](const Ray& ray) {
+  const auto firstHit = [&](const Ray& ray, float tMax) {
     std::optional<Hit> best;
-    if (const auto h = scene.firstHit(ray, 0.0f, 1.0f))
+    if (const auto h = scene.firstHit(ray, 0.0f, tMax))
       best = Hit{h->t, objectOf[static_cast<std::size_t>(h->object)], h->normal};
     for (std::size_t i = 0; i < objects.size(); ++i) {
       if (!objects[i].sphere) continue;
       const glm::vec4 s = *objects[i].sphere;
-      if (const auto t = intersectSphere(ray, glm::vec3(s), s.w, 0.0f, best ? best->t : 1.0f))
+      if (const auto t = intersectSphere(ray, glm::vec3(s), s.w, 0.0f, best ? best->t : tMax))
         best = Hit{*t, i, glm::normalize(ray.origin + *t * ray.direction - glm::vec3(s))};
     }
     return best;
@@ -77,8 +92,8 @@ std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objects,
   for (int y = 0; y < size.y; ++y)
     for (int x = 0; x < size.x; ++x) {
       PixelClass& c = classes[static_cast<std::size_t>(y * size.x + x)];
-      const Ray ray = cameraRay(inverse, size, x, y);
-      const auto hit = firstHit(ray);
+      const auto [ray, tMax] = cameraRay(inverse, size, x, y);
+      const auto hit = firstHit(ray, tMax);
       if (!hit) {
         c = PixelClass::Empty;
         continue;

@@ -1,5 +1,6 @@
 #include "geometry/shapes.h"
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <glm/geometric.hpp>
@@ -319,6 +320,76 @@ Mesh makeCone(float radius, float height, int slices) {
     const std::uint32_t j0 = u32(j), j1 = u32((j + 1) % s);
     addTriangle(mesh, j0, apexes + j0, j1);
     addTriangle(mesh, centre, ring + j0, ring + j1);
+  }
+  return mesh;
+}
+
+}  // namespace stencil
+
+namespace stencil {
+
+Mesh makeStairs(int steps, float width, float rise, float run) {
+  requireAtLeast("makeStairs", "steps", steps, 1);
+  requirePositive("makeStairs", "width", width);
+  requirePositive("makeStairs", "rise", rise);
+  requirePositive("makeStairs", "run", run);
+  requireIndexable("makeStairs", 16ull * static_cast<std::uint64_t>(steps) + 8,
+                   12ull * static_cast<std::uint64_t>(steps));
+  const int n = steps;
+  // Corners on a grid: step i along x, level j up y, side s (+1 front at +z, -1 back). The same
+  // expression everywhere, so a corner shared by faces is bit-identical and welds.
+  auto corner = [&](int i, int j, int s) {
+    return glm::vec3((static_cast<float>(i) - 0.5f * static_cast<float>(n)) * run,
+                     (static_cast<float>(j) - 0.5f * static_cast<float>(n)) * rise,
+                     0.5f * width * static_cast<float>(s));
+  };
+  Mesh mesh;
+  reserve(mesh, 16ull * n + 8, 12ull * n);
+  // One flat face: its own vertices, its triangles turned to face `normal`.
+  struct Face {
+    Mesh& mesh;
+    glm::vec3 normal;
+    std::vector<std::pair<glm::ivec3, std::uint32_t>> vertices{};
+    std::uint32_t vertex(const glm::vec3& p, const glm::ivec3& key) {
+      for (const auto& [k, index] : vertices)
+        if (k == key) return index;
+      vertices.emplace_back(key, u32(mesh.positions.size()));
+      addVertex(mesh, p, normal);
+      return vertices.back().second;
+    }
+  };
+  auto triangle = [&](Face& face, std::array<glm::ivec3, 3> c) {
+    glm::vec3 p[3];
+    for (int k = 0; k < 3; ++k) p[k] = corner(c[k].x, c[k].y, c[k].z);
+    if (glm::dot(glm::cross(p[1] - p[0], p[2] - p[0]), face.normal) < 0.0f) std::swap(c[1], c[2]);
+    for (int k = 0; k < 3; ++k) mesh.indices.push_back(face.vertex(corner(c[k].x, c[k].y, c[k].z), c[k]));
+  };
+  auto quad = [&](const glm::vec3& normal, glm::ivec2 a, glm::ivec2 b) {  // the edge a-b across the width
+    Face face{mesh, normal};
+    triangle(face, {glm::ivec3(a, 1), glm::ivec3(b, 1), glm::ivec3(b, -1)});
+    triangle(face, {glm::ivec3(a, 1), glm::ivec3(b, -1), glm::ivec3(a, -1)});
+  };
+  for (int s : {1, -1}) {  // the two sides: column k under step k, fanned from its bottom right corner
+    Face side{mesh, glm::vec3(0.0f, 0.0f, static_cast<float>(s))};
+    for (int k = 0; k < n; ++k) {
+      const glm::ivec3 bottomRight(k + 1, 0, s), topRight(k + 1, k + 1, s), topLeft(k, k + 1, s),
+          innerCorner(k, k, s), bottomLeft(k, 0, s);
+      triangle(side, {bottomRight, topRight, topLeft});
+      triangle(side, {bottomRight, topLeft, innerCorner});
+      if (k > 0) triangle(side, {bottomRight, innerCorner, bottomLeft});  // for k = 0 it has no area
+    }
+  }
+  {  // the floor, split at every column so its edges meet the sides' (no T-junctions)
+    Face floor{mesh, glm::vec3(0, -1, 0)};
+    for (int k = 0; k < n; ++k) {
+      triangle(floor, {glm::ivec3(k, 0, 1), glm::ivec3(k + 1, 0, 1), glm::ivec3(k + 1, 0, -1)});
+      triangle(floor, {glm::ivec3(k, 0, 1), glm::ivec3(k + 1, 0, -1), glm::ivec3(k, 0, -1)});
+    }
+  }
+  quad({1, 0, 0}, {n, 0}, {n, n});  // the back
+  for (int k = 0; k < n; ++k) {
+    quad({-1, 0, 0}, {k, k}, {k, k + 1});         // riser
+    quad({0, 1, 0}, {k, k + 1}, {k + 1, k + 1});  // tread
   }
   return mesh;
 }

@@ -49,4 +49,11 @@ Mesh makeCylinder(float radius, float height, int slices);
 // 3*slices+1 vertices (slices+2 welded), 2*slices triangles.
 Mesh makeCone(float radius, float height, int slices);
 
+// A solid flight of stairs: `steps` steps, each `rise` high and `run` deep, climbing along +x,
+// `width` wide along z; closed down to the floor under the lowest step and at the back of the
+// highest. Centred like the others: x and y from -half to +half of the whole flight.
+// Every face has its own vertices (flat normals): 16*steps+8 vertices, 12*steps triangles;
+// 6*steps+2 after welding.
+Mesh makeStairs(int steps, float width, float rise, float run);
+
 }  // namespace stencil

@@ -47,7 +47,8 @@ glm::vec3 OrbitCamera::eye() const {
          distance * glm::vec3(std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el));
 }
 glm::mat4 OrbitCamera::view() const {
-  return glm::lookAt(eye(), target, glm::vec3(0, 1, 0));
+  const glm::mat4 lookAt = glm::lookAt(eye(), target, glm::vec3(0, 1, 0));
+  return mirrored ? glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f)) * lookAt : lookAt;
 }
 glm::mat4 OrbitCamera::projection(float aspect) const {
   if (orthographic) {
@@ -56,6 +57,29 @@ glm::mat4 OrbitCamera::projection(float aspect) const {
   }
   if (std::isinf(farPlane)) return glm::infinitePerspective(glm::radians(fovyDeg), aspect, nearPlane);
   return glm::perspective(glm::radians(fovyDeg), aspect, nearPlane, farPlane);
+}
+
+OrbitCamera orbitCameraOf(const SceneCamera& c) {
+  if (glm::length(c.up) == 0.0f || glm::length(glm::normalize(c.up) - glm::vec3(0, 1, 0)) > 1e-6f)
+    throw std::invalid_argument("the camera's up must be +y (0 1 0)");
+  const glm::vec3 offset = c.eye - c.target;
+  const float distance = glm::length(offset);
+  if (!(distance > 0.0f)) throw std::invalid_argument("the camera's eye is on its target");
+  const glm::vec3 d = offset / distance;
+  if (glm::length(glm::vec2(d.x, d.z)) < 1e-6f)
+    throw std::invalid_argument("the camera looks straight up or down, where +y cannot be its up");
+  OrbitCamera o;
+  o.target = c.target;
+  o.distance = distance;
+  o.azimuthDeg = glm::degrees(std::atan2(d.x, d.z));  // eye() puts the eye at (sin az, ., cos az)
+  o.elevationDeg = glm::degrees(std::asin(glm::clamp(d.y, -1.0f, 1.0f)));
+  o.fovyDeg = c.fovyDeg;
+  o.nearPlane = c.nearPlane;
+  o.farPlane = c.farPlane;
+  o.orthographic = c.orthographic;
+  o.orthoHeight = c.orthoHeight;
+  o.mirrored = c.mirrored;
+  return o;
 }
 
 Frame::Frame(double t, glm::ivec2 s, const OrbitCamera& camera, const std::vector<Option>& options,
@@ -81,6 +105,12 @@ void Frame::pass(std::string_view name) {
 
 void Frame::count(std::string_view name, std::uint64_t amount) {
   recorder_.count(name, amount);
+}
+
+void Frame::shadowMask(std::string_view name) {
+  if (name.empty() || name.find_first_of("/\\") != std::string_view::npos || name.front() == '.')
+    throw std::logic_error("shadow mask name '" + std::string(name) + "' is not a plain file name");
+  if (shadowMaskWriter_) shadowMaskWriter_(name);
 }
 
 // ---- session --------------------------------------------------------------------------
@@ -141,6 +171,13 @@ void Session::renderFrame(double time, FrameRequest request) {
   recorder->beginFrame(request);
   Frame frame(time, {framebuffer->width(), framebuffer->height()}, camera, options, *recorder,
               context->features());
+  if (commandLine.maskOut && saveShadowMasks)
+    frame.setShadowMaskWriter([this](std::string_view name) {
+      const Image stencil = framebuffer->readStencil();
+      Image mask(stencil.width, stencil.height, 1);
+      for (std::size_t i = 0; i < mask.pixels.size(); ++i) mask.pixels[i] = stencil.pixels[i] == 0 ? 255 : 0;
+      writePng(*commandLine.maskOut / (std::string(name) + ".png"), mask);
+    });
   lesson->render(frame);
   recorder->endFrame();
   viewProjection = frame.projection * frame.view;
@@ -263,6 +300,7 @@ int runHeadless(Session& s) {
     const bool last = i + 1 == frames;
     FrameRequest request{
         .measure = cl.stats, .captureAll = last && cl.passesDir.has_value(), .captureOnly = {}};
+    s.saveShadowMasks = last;
     const auto start = std::chrono::steady_clock::now();
     s.renderFrame(cl.time + i / 60.0, request);
     glFinish();
@@ -309,30 +347,61 @@ int finishRun(Session& s, const Image& colour, const Image& stencil, const std::
   return 0;
 }
 
-int runLesson(const LessonInfo& info, const LessonFactory& factory, int argc, char** argv) {
+namespace {
+
+// Reads --scene's file before anything is made; its camera replaces the lesson's and the variants'.
+Scene readScene(const CommandLine& cl, LessonInfo& info) {
+  Scene scene;
+  try {
+    scene = loadScene(*cl.scene);
+  } catch (const SceneError& e) {
+    throw UsageError(e.what());
+  }
+  try {
+    info.camera = orbitCameraOf(scene.camera);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(cl.scene->string() + ": " + e.what());
+  }
+  for (Variant& v : info.variants) v.camera.reset();
+  if (!cl.quiet)
+    for (const SceneObject& o : scene.objects)
+      for (const std::string& m : o.caster.report.messages)
+        std::cerr << cl.scene->string() << ": object '" << o.name << "': " << m << "\n";
+  return scene;
+}
+
+int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, bool readsScenes, int argc,
+               char** argv) {
   const std::string program = std::filesystem::path(argv[0]).filename().string();
   bool golden = false;
   try {
-    const CommandLine cl = parseCommandLine(info, argc, argv);
+    const CommandLine cl = parseCommandLine(lessonInfo, argc, argv);
     golden = cl.golden.has_value();
+    if (!readsScenes && (cl.scene || cl.maskOut))
+      throw UsageError(std::string(cl.scene ? "--scene" : "--mask-out") + ": " + lessonInfo.id +
+                       " draws only its own scene; the scene lessons read scene files");
     if (cl.help) {
-      std::cout << helpText(info, program);
+      std::cout << helpText(lessonInfo, program, readsScenes);
       return 0;
     }
     if (cl.listVariants) {
-      std::cout << variantList(info);
+      std::cout << variantList(lessonInfo);
       return 0;
     }
+    LessonInfo info = lessonInfo;
+    std::optional<Scene> scene;
+    if (cl.scene) scene = readScene(cl, info);
+    const LessonFactory make = [&] { return factory(scene ? &*scene : nullptr); };
     setShaderDirFlag(cl.shaderDir);
     BackendChoice choice = chooseBackend(cl.backend, cl.headless);
     std::unique_ptr<Session> session;
     try {
-      session = std::make_unique<Session>(info, factory, cl, choice.backend);
+      session = std::make_unique<Session>(info, make, cl, choice.backend);
     } catch (const NoContextError& e) {
       // The automatic choice falls back to EGL when OSMesa cannot make a context.
       if (cl.backend || choice.backend != Backend::Osmesa) throw;
       choice = {Backend::Egl, std::string("OSMesa failed (") + e.what() + ")"};
-      session = std::make_unique<Session>(info, factory, cl, choice.backend);
+      session = std::make_unique<Session>(info, make, cl, choice.backend);
     }
     if (!cl.quiet) {
       const GlFeatures& f = session->context->features();
@@ -350,6 +419,17 @@ int runLesson(const LessonInfo& info, const LessonFactory& factory, int argc, ch
     std::cerr << program << ": " << e.what() << "\n";
     return 1;
   }
+}
+
+}  // namespace
+
+int runLesson(const LessonInfo& info, const LessonFactory& factory, int argc, char** argv) {
+  return runProgram(
+      info, [&](const Scene*) { return factory(); }, false, argc, argv);
+}
+
+int runSceneLesson(const LessonInfo& info, const SceneLessonFactory& factory, int argc, char** argv) {
+  return runProgram(info, factory, true, argc, argv);
 }
 
 }  // namespace stencil

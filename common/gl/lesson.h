@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "geometry/scene.h"
 #include "geometry/shadow_oracle.h"
 #include "gl/context.h"
 
@@ -42,11 +43,17 @@ struct OrbitCamera {
   float nearPlane = 0.1f, farPlane = 100.0f;  // farPlane infinite: the far plane at infinity (Pinf)
   bool orthographic = false;                  // a parallel view orthoHeight world units high
   float orthoHeight = 10.0f;
+  bool mirrored = false;  // the picture flipped left to right: the view matrix's determinant is negative
 
   glm::vec3 eye() const;
   glm::mat4 view() const;
   glm::mat4 projection(float aspect) const;
 };
+
+// The orbit camera that sees what a scene file's camera sees (eye, target, field of view, planes,
+// orthographic, mirrored). Throws std::invalid_argument for what an orbit camera cannot be: an
+// up other than +y, an eye on the target or straight above or below it.
+OrbitCamera orbitCameraOf(const SceneCamera&);
 
 // A named configuration of the options, e.g. "stencil-off" to show the artifact.
 struct Variant {
@@ -89,10 +96,20 @@ class Frame {
   // Adds to a named count of the lesson's own (e.g. "scene_renderings"), reported per frame
   // under "counts" in --stats: work that draw calls and triangles do not show.
   void count(std::string_view name, std::uint64_t amount = 1);
+  // Saves the stencil as it is now as the shadow mask NAME.png under --mask-out DIR (white where
+  // the stencil is 0, lit; black elsewhere), for the last frame of a headless run; does nothing
+  // otherwise. Scene lessons call it once per light with "light-<i>", i the light's index in the
+  // scene, after that light's shadow is in the stencil: tests compare it with a ray cast.
+  void shadowMask(std::string_view name);
+
+  // How the session saves shadow masks; empty when they are not wanted.
+  using ShadowMaskWriter = std::function<void(std::string_view name)>;
+  void setShadowMaskWriter(ShadowMaskWriter writer) { shadowMaskWriter_ = std::move(writer); }
 
  private:
   const std::vector<Option>& options_;
   PassRecorder& recorder_;
+  ShadowMaskWriter shadowMaskWriter_;
 };
 
 // What --oracle needs to check a lesson's shadows against a CPU ray cast of the same scene
@@ -123,6 +140,17 @@ class Lesson {
 using LessonFactory = std::function<std::unique_ptr<Lesson>()>;
 
 // The whole program: parse the command line, make a context, run headless or in a window.
+// --scene and --mask-out are refused: the lesson draws only its own scene.
 int runLesson(const LessonInfo&, const LessonFactory&, int argc, char** argv);
+
+// A lesson that renders any scene from a file (geometry/scene.h). fromFile is the scene given
+// with --scene, read (and its casters prepared) before the lesson is made, and alive as long as
+// the lesson; nullptr without --scene, when the lesson draws its built-in scene.
+using SceneLessonFactory = std::function<std::unique_ptr<Lesson>(const Scene* fromFile)>;
+
+// runLesson for such lessons: also takes --scene FILE (its camera replaces the lesson's and the
+// variants'; a file that cannot be read is one line "FILE:LINE: ...", exit 2) and --mask-out DIR
+// (Frame::shadowMask).
+int runSceneLesson(const LessonInfo&, const SceneLessonFactory&, int argc, char** argv);
 
 }  // namespace stencil

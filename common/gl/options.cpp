@@ -100,6 +100,10 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
       cl.golden = value();
     else if (flag == "--oracle")
       cl.oracle = value();
+    else if (flag == "--scene")
+      cl.scene = value();
+    else if (flag == "--mask-out")
+      cl.maskOut = value();
     else if (flag == "--update-golden")
       cl.updateGolden = true;
     else if (flag == "--artifacts")
@@ -127,7 +131,7 @@ std::string variantList(const LessonInfo& info) {
   return out.str();
 }
 
-std::string helpText(const LessonInfo& info, const std::string& program) {
+std::string helpText(const LessonInfo& info, const std::string& program, bool readsScenes) {
   std::ostringstream out;
   out << info.id << ": " << info.title << "\n"
       << info.summary << "\n\n"
@@ -146,7 +150,11 @@ std::string helpText(const LessonInfo& info, const std::string& program) {
       << "                           runs until closed)\n"
       << "  --variant NAME           a named configuration (default: the first)\n"
       << "  --list-variants          print the variants and exit\n"
-      << "  --set NAME=VALUE         set one option after the variant's settings\n\n"
+      << "  --set NAME=VALUE         set one option after the variant's settings\n";
+  if (readsScenes)
+    out << "  --scene FILE             render the scene described in FILE (docs/scenes.md) from its\n"
+        << "                           camera, instead of the lesson's own scene\n";
+  out << "\n"
       << "Output (of the last frame)\n"
       << "  --out FILE.png           the colour image\n"
       << "  --stencil-out FILE.png   the stencil buffer as a picture with a legend; the raw values\n"
@@ -156,7 +164,12 @@ std::string helpText(const LessonInfo& info, const std::string& program) {
       << "  --stats                  JSON on stdout: per pass draw calls, triangles, fragments\n"
       << "                           passed, primitives, GPU and CPU time (null where the driver\n"
       << "                           has no query for it), the lesson's own counts\n"
-      << "  --quiet                  no context line on stderr\n\n"
+      << "  --quiet                  no context line on stderr\n";
+  if (readsScenes)
+    out << "  --mask-out DIR           each light's shadow mask as DIR/light-<i>.png (i from 0): the\n"
+        << "                           stencil once that light's shadow is in it, white where it is 0\n"
+        << "                           (lit), black elsewhere (headless runs: the last frame)\n";
+  out << "\n"
       << "  --oracle FILE.png        check the shadows against a CPU ray cast of the same scene,\n"
       << "                           pixel by pixel; exit 1 if they differ off the edges; the\n"
       << "                           comparison as a picture (red: wrong, yellow: on an edge);\n"

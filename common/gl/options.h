@@ -21,9 +21,11 @@ struct CommandLine {
   std::string variant;        // empty: the lesson's first
   std::vector<std::pair<std::string, int>> settings;  // --set NAME=VALUE
   std::optional<std::filesystem::path> out, stencilOut, passesDir, golden, artifacts, shaderDir;
-  std::optional<std::filesystem::path> oracle;  // --oracle FILE.png: check the shadows by ray casting
-  int stencilBits = 8;                          // --stencil-bits 0 builds a framebuffer without stencil
-  bool stencilBitPlanes = false;                // --stencil-view bits
+  std::optional<std::filesystem::path> oracle;   // --oracle FILE.png: check the shadows by ray casting
+  std::optional<std::filesystem::path> scene;    // --scene FILE: a scene lesson renders this scene
+  std::optional<std::filesystem::path> maskOut;  // --mask-out DIR: the shadow masks (Frame::shadowMask)
+  int stencilBits = 8;                           // --stencil-bits 0 builds a framebuffer without stencil
+  bool stencilBitPlanes = false;                 // --stencil-view bits
   bool stats = false;
   bool updateGolden = false;
   bool quiet = false;
@@ -31,7 +33,8 @@ struct CommandLine {
 
 // Throws UsageError with one line for anything it does not understand.
 CommandLine parseCommandLine(const LessonInfo&, int argc, char** argv);
-std::string helpText(const LessonInfo&, const std::string& program);
+// readsScenes: the lesson runs through runSceneLesson, so --scene and --mask-out are listed.
+std::string helpText(const LessonInfo&, const std::string& program, bool readsScenes = false);
 std::string variantList(const LessonInfo&);
 
 // The lesson's options with the variant's settings and then --set applied.

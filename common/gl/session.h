@@ -37,6 +37,7 @@ class Session {
   OrbitCamera camera;
   std::optional<ShadowCheck> shadowCheck;  // the last frame's, when --oracle asks for it
   glm::mat4 viewProjection{1.0f};          // the last frame's
+  bool saveShadowMasks = false;            // Frame::shadowMask writes under --mask-out (the last frame)
 
  private:
   void checkNeeds(const std::vector<Feature>&, const std::string& who) const;

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "geometry/raycast.h"
@@ -63,6 +64,25 @@ TEST(OracleSphere, TrueSphereShadowsMoreThanItsInscribedMesh) {
     meshShadowed += c == PixelClass::Shadowed;
   EXPECT_GT(trueShadowed, meshShadowed);
   EXPECT_GT(meshShadowed, 0u);
+}
+
+// The far plane at infinity (glm::infinitePerspective) gives the oracle the same rays as a far
+// plane beyond everything: the same classes pixel for pixel, and both see the scene.
+TEST(Oracle, FarPlaneAtInfinitySeesWhatAFiniteOneSees) {
+  const Mesh ground = makePlane(3.0f, 1);
+  const Mesh box = makeCube(0.5f);
+  const std::vector<OracleObject> objects{{&ground, glm::mat4(1), false, true},
+                                          {&box, glm::translate(glm::mat4(1), {0, 1, 0}), true, true}};
+  const glm::mat4 view = glm::lookAt(glm::vec3(4, 4, 6), glm::vec3(0), glm::vec3(0, 1, 0));
+  const glm::vec4 light(1.5f, 4.0f, -0.8f, 1.0f);
+  const glm::ivec2 size(64, 48);
+  const auto finite =
+      classifyPixels(objects, light, glm::perspective(0.8f, 4.0f / 3.0f, 0.5f, 100.0f) * view, size);
+  const auto infinite =
+      classifyPixels(objects, light, glm::infinitePerspective(0.8f, 4.0f / 3.0f, 0.5f) * view, size);
+  EXPECT_EQ(finite, infinite);
+  EXPECT_GT(std::count(infinite.begin(), infinite.end(), PixelClass::Shadowed), 0);
+  EXPECT_GT(std::count(infinite.begin(), infinite.end(), PixelClass::Lit), 0);
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 // The shared command line: names scripts rely on, and one clear error for bad input.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "gl/errors.h"
 #include "gl/options.h"
 #include "gl/shader.h"
@@ -102,6 +105,59 @@ TEST(CommandLine, HelpNamesEveryFlagAndVariant) {
        {"--headless", "--backend", "--size", "--time", "--frames", "--variant", "--list-variants", "--out",
         "--stencil-out", "--passes", "--stats", "--golden", "--update-golden", "depth [D]", "off"})
     EXPECT_NE(help.find(s), std::string::npos) << s;
+}
+
+TEST(CommandLine, SceneFlagsAreParsedAndListedOnlyForSceneLessons) {
+  const CommandLine cl = parse({"--scene", "a.scene", "--mask-out", "masks"});
+  EXPECT_EQ(cl.scene, std::filesystem::path("a.scene"));
+  EXPECT_EQ(cl.maskOut, std::filesystem::path("masks"));
+  EXPECT_FALSE(parse({}).scene.has_value());
+  EXPECT_THROW(parse({"--scene"}), UsageError);
+  const std::string plain = helpText(info(), "lesson"), scenes = helpText(info(), "lesson", true);
+  for (const char* s : {"--scene FILE", "--mask-out DIR"}) {
+    EXPECT_EQ(plain.find(s), std::string::npos) << s;
+    EXPECT_NE(scenes.find(s), std::string::npos) << s;
+  }
+}
+
+// A scene file's camera as an orbit camera sees what the file's eye sees: the same view matrix.
+TEST(OrbitCameraOf, SeesFromTheScenesEyeTowardsItsTarget) {
+  SceneCamera c;
+  c.eye = {3.0f, -2.0f, -4.0f};
+  c.target = {0.5f, 1.0f, 1.0f};
+  c.fovyDeg = 60.0f;
+  c.nearPlane = 0.25f;
+  const OrbitCamera o = orbitCameraOf(c);
+  const glm::mat4 expected = glm::lookAt(c.eye, c.target, glm::vec3(0, 1, 0));
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) EXPECT_NEAR(o.view()[i][j], expected[i][j], 1e-5f) << i << "," << j;
+  EXPECT_NEAR(glm::length(o.eye() - c.eye), 0.0f, 1e-5f);
+  EXPECT_FLOAT_EQ(o.fovyDeg, 60.0f);
+  EXPECT_FLOAT_EQ(o.nearPlane, 0.25f);
+  EXPECT_TRUE(std::isinf(o.farPlane));
+  EXPECT_FALSE(o.orthographic);
+
+  c.orthographic = true;
+  c.orthoHeight = 7.0f;
+  c.farPlane = 50.0f;
+  c.mirrored = true;
+  const OrbitCamera ortho = orbitCameraOf(c);
+  EXPECT_TRUE(ortho.orthographic);
+  EXPECT_FLOAT_EQ(ortho.orthoHeight, 7.0f);
+  EXPECT_FLOAT_EQ(ortho.farPlane, 50.0f);
+  EXPECT_LT(glm::determinant(ortho.view()), 0.0f) << "mirrored";
+  EXPECT_GT(glm::determinant(o.view()), 0.0f);
+}
+
+TEST(OrbitCameraOf, RefusesWhatAnOrbitCameraCannotBe) {
+  SceneCamera c;
+  c.up = {1, 0, 0};
+  EXPECT_THROW(orbitCameraOf(c), std::invalid_argument);
+  c = SceneCamera{};
+  c.eye = c.target;
+  EXPECT_THROW(orbitCameraOf(c), std::invalid_argument);
+  c.eye = c.target + glm::vec3(0, 5, 0);
+  EXPECT_THROW(orbitCameraOf(c), std::invalid_argument) << "straight above: +y cannot be up";
 }
 
 TEST(ShaderLog, MesaAndNvidiaLinesBecomeFileLine) {
