@@ -416,8 +416,8 @@ class FastRobustShadows final : public Lesson {
       glStencilFunc(GL_EQUAL, 0, 0xFF);        // outside every volume
       glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);  // the count stays for the next look
       glEnable(GL_BLEND);
-      glBlendFunc(GL_ONE, GL_ONE);  // light adds up
-      drawScene(f, light.position, light.color, radius, glm::vec3(0));
+      glBlendFunc(GL_ONE, GL_ONE);                                            // light adds up
+      drawScene(f, light.position, light.color, light.radius, glm::vec3(0));  // its own fall-off
       glDisable(GL_BLEND);
       glDisable(GL_STENCIL_TEST);
       glDisable(GL_SCISSOR_TEST);
