@@ -367,6 +367,8 @@ class FastRobustShadows final : public Lesson {
       target_ = std::make_unique<AccumulationTarget>(f.size, f.on("float"));
     target_->bind();
     const glm::mat4 viewProjection = f.projection * f.view;
+    // A mirrored view turns every triangle round on screen: what faces the eye winds clockwise.
+    glFrontFace(glm::determinant(f.view) < 0.0f ? GL_CW : GL_CCW);
 
     // ---- ambient: the depth buffer filled once, for every light ------------------------------
     glClearColor(0.02f, 0.025f, 0.035f, 1.0f);
@@ -439,6 +441,7 @@ class FastRobustShadows final : public Lesson {
     glBindFramebuffer(GL_FRAMEBUFFER, framework_);
     if (f.on("show")) drawOverlay(f);
     glDisable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);  // GL's default again
     f.pass("overlay");
   }
 
