@@ -15,7 +15,8 @@
 //   fast_shadows_sweep OUT [--quick] [--check]
 //
 // writes OUT.csv and OUT.svg. --check exits 1 unless the three robust methods agree with the ray
-// cast off its edges everywhere, z-pass alone does not with the eye in a shadow, and the sphere's
+// cast off its edges everywhere (up to two grazing pixels), z-pass alone does not with the eye in
+// a shadow, and the sphere's
 // triangles grow as the paper says (linearly: at most 1.5 times the slice ratio; quadratically:
 // at least half its square).
 #include <algorithm>
@@ -34,6 +35,7 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::string kSize = "640x480";
+constexpr long long kGrazingPixels = 2;  // wrong pixels off the ray cast's edges a robust method may have
 const std::vector<std::string> kMethods = {"mcguire", "everitt-kilgard", "lengyel", "zpass"};
 const std::vector<std::string> kViews = {"system", "eye-in-shadow", "looking-up"};
 
@@ -216,7 +218,9 @@ int main(int argc, char** argv) {
   for (const Row& r : rows) {
     if (r.sweep != "methods") continue;
     const bool robust = r.method != "zpass";
-    if (robust && r.wrongOffEdges != 0) {
+    // A face almost edge-on to the light meets its own silhouette's side face at its own depth:
+    // at 640x480 a pixel there may go either way (docs/16-fast-robust-shadows.md).
+    if (robust && r.wrongOffEdges > kGrazingPixels) {
       std::cerr << "sweep check FAILED: " << r.method << " in " << r.view << " at t " << r.time << ": "
                 << r.wrongOffEdges << " wrong pixels\n";
       ok = false;
