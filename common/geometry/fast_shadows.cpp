@@ -212,6 +212,20 @@ ScissorRect lightScissor(const glm::vec3& centre, float radius, const glm::mat4&
   return {x0, y0, x1 - x0, y1 - y0};
 }
 
+DepthBounds lightDepthBounds(const glm::vec3& centre, float radius, const glm::mat4& view,
+                             const glm::mat4& projection) {
+  if (std::isinf(radius)) return {};
+  const float distance = -(view * glm::vec4(centre, 1.0f)).z;  // along the view direction
+  const auto windowDepth = [&](float d) {
+    const glm::vec4 clip = projection * glm::vec4(0.0f, 0.0f, -d, 1.0f);
+    return std::clamp(0.5f * clip.z / clip.w + 0.5f, 0.0f, 1.0f);
+  };
+  const glm::vec4 nearPoint = glm::inverse(projection) * glm::vec4(0.0f, 0.0f, -1.0f, 1.0f);
+  const float nearDistance = -nearPoint.z / nearPoint.w;
+  const float nearest = distance - radius <= nearDistance ? 0.0f : windowDepth(distance - radius);
+  return {nearest, windowDepth(distance + radius)};
+}
+
 BoundingSphere worldBounds(const BoundingSphere& local, const glm::mat4& model) {
   const float scale = std::max(
       {glm::length(glm::vec3(model[0])), glm::length(glm::vec3(model[1])), glm::length(glm::vec3(model[2]))});

@@ -108,6 +108,15 @@ struct ScissorRect {
 ScissorRect lightScissor(const glm::vec3& centre, float radius, const glm::mat4& viewProjection,
                          glm::ivec2 size);
 
+// The window depths (0..1, GL's default depth range) between which the light's sphere lies, for
+// glDepthBoundsEXT: a visible surface whose depth is outside them lies outside the sphere, and
+// no volume needs to touch its pixel. From 0 when the sphere reaches the near plane.
+struct DepthBounds {
+  float nearest = 0.0f, farthest = 1.0f;
+};
+DepthBounds lightDepthBounds(const glm::vec3& centre, float radius, const glm::mat4& view,
+                             const glm::mat4& projection);
+
 // The world bounding sphere of a mesh placed by a rigid model matrix.
 BoundingSphere worldBounds(const BoundingSphere& local, const glm::mat4& model);
 

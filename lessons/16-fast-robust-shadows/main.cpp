@@ -332,7 +332,7 @@ class AccumulationTarget {
 
 // ---- the lesson ---------------------------------------------------------------------------------
 
-constexpr int kZPassOnly = 3, kLengyel = 2, kEverittKilgard = 1;
+constexpr int kMcGuire = 0, kEverittKilgard = 1, kLengyel = 2;  // the method option; 3 is z-pass only
 
 // What one caster draws for one light, as ranges of its uploaded index list.
 struct CasterVolume {
@@ -402,11 +402,15 @@ class FastRobustShadows final : public Lesson {
       glStencilMask(0xFF);
       glClear(GL_STENCIL_BUFFER_BIT);
       glEnable(GL_SCISSOR_TEST);  // from here on only the light's rectangle is touched
-      if (hasFeature(f.features, Feature::DepthBoundsTest))
-        f.count("depth_bounds_used");  // EXT_depth_bounds_test: not on this renderer's list of entry points
-      else
-        f.count("depth_bounds_skipped");
+      const bool depthBounds = hasFeature(f.features, Feature::DepthBoundsTest) && !std::isinf(radius);
+      if (depthBounds) {  // volumes skip pixels whose surface lies in front of or behind the sphere
+        const DepthBounds range = lightDepthBounds(lightCentre, radius, f.view, f.projection);
+        glEnable(GL_DEPTH_BOUNDS_TEST_EXT);
+        glDepthBoundsEXT(range.nearest, range.farthest);
+      }
+      f.count(depthBounds ? "depth_bounds_used" : "depth_bounds_skipped");
       if (f.on("shadow")) drawShadows(f, light, lightCentre, radius, nearRect, frustum, checked);
+      if (depthBounds) glDisable(GL_DEPTH_BOUNDS_TEST_EXT);
       endPass(f, "shadows");
       f.shadowMask("light-" + std::to_string(order[k]));
       target_->bind();  // reading the mask may have bound another framebuffer
@@ -545,8 +549,10 @@ class FastRobustShadows final : public Lesson {
         continue;
       }
       f.count("casters_case" + std::to_string(v.shadowCase));
+      // Full z-fail (both caps of every volume) for Everitt-Kilgard, and for Lengyel once any caster
+      // is in the pyramid; z-pass only never.
       const bool everittKilgard = method == kEverittKilgard || (method == kLengyel && anyInPyramid);
-      v.zfail = method == 0 ? v.shadowCase != 1 : everittKilgard;
+      v.zfail = method == kMcGuire ? v.shadowCase != 1 : everittKilgard;
       const glm::mat4 model = o.modelAt(f.time);
       const glm::vec4 local = glm::inverse(model) * light.position;  // the light in the caster's space
       buildVolume(f, caster, local, v, everittKilgard);

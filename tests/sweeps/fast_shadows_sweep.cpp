@@ -122,7 +122,7 @@ void writeBars(std::ofstream& out, const std::string& title, const std::vector<s
   double most = 0;
   for (const auto& g : values)
     for (double v : g) most = std::max(most, v);
-  most = most > 0 ? most * 1.1 : 1;
+  most = most > 0 ? most * 1.35 : 1;  // room for the legend
   const double bottom = top + height, groupWidth = width / static_cast<double>(groups.size());
   const double barWidth = groupWidth * 0.8 / static_cast<double>(series.size());
   out << "<text x='" << left + width / 2 << "' y='" << top - 8 << "' text-anchor='middle' font-weight='bold'>"
@@ -140,8 +140,8 @@ void writeBars(std::ofstream& out, const std::string& title, const std::vector<s
         << groups[g] << "</text>\n";
   }
   for (std::size_t s = 0; s < series.size(); ++s)
-    out << "<text x='" << left + 8 << "' y='" << top + 14.0 * static_cast<double>(s + 1) << "' fill='"
-        << colours[s % 4] << "'>" << series[s] << "</text>\n";
+    out << "<text x='" << left + width << "' y='" << top + 14.0 * static_cast<double>(s + 1)
+        << "' text-anchor='end' fill='" << colours[s % 4] << "'>" << series[s] << "</text>\n";
 }
 
 }  // namespace

@@ -231,6 +231,24 @@ TEST(LightBounds, TheOracleJudgesOnlyWithinTheRadius) {
   EXPECT_EQ(lit + other, 3600u);
 }
 
+// The sphere's nearest and farthest points along the view, at their window depths.
+TEST(LightBounds, DepthBoundsHoldTheSphere) {
+  const glm::mat4 view = glm::lookAt(glm::vec3(0, 0, 5), glm::vec3(0), glm::vec3(0, 1, 0));
+  const glm::mat4 projection = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f);
+  const auto depthOf = [&](const glm::vec3& p) {
+    const glm::vec4 clip = projection * view * glm::vec4(p, 1.0f);
+    return 0.5f * clip.z / clip.w + 0.5f;
+  };
+  const DepthBounds b = lightDepthBounds({0, 0, 0}, 1.0f, view, projection);
+  EXPECT_NEAR(b.nearest, depthOf({0, 0, 1}), 1e-6f);
+  EXPECT_NEAR(b.farthest, depthOf({0, 0, -1}), 1e-6f);
+  const DepthBounds around = lightDepthBounds({0, 0, 4}, 2.0f, view, projection);  // the eye inside
+  EXPECT_EQ(around.nearest, 0.0f);
+  const DepthBounds infinite =
+      lightDepthBounds({0, 0, 0}, 1.0f, view, glm::infinitePerspective(glm::radians(60.0f), 1.0f, 0.1f));
+  EXPECT_LT(infinite.farthest, 1.0f);
+}
+
 TEST(WorldBounds, FollowsARigidMotion) {
   const glm::mat4 m = glm::rotate(glm::translate(glm::mat4(1), {1, 2, 3}), 0.7f, glm::vec3(0, 1, 0));
   const BoundingSphere s = worldBounds({{1, 0, 0}, 0.5f}, m);
