@@ -65,6 +65,19 @@ TEST(FastRobustShadows, WithNoCasterInThePyramidZPassIsEnough) {
   }
 }
 
+// A light a hair above a box's top face: the fan triangle in that face's plane spans more than
+// 179 degrees seen from the light and is split; the shadow still matches the ray cast, split or
+// not (the rasterizer draws a triangle at infinity as the cone of its directions either way).
+TEST(FastRobustShadows, FanTrianglesUnderALightInTheirPlaneAreSplit) {
+  const std::string scene = std::string(SCENES) + "/light-on-the-box.scene";
+  const auto split = run("split", "--scene " + scene, true);
+  if (!split) GTEST_SKIP() << "no GL context";
+  EXPECT_GT(split->count("split_fan_triangles"), 0);
+  const auto whole = run("whole", "--scene " + scene + " --set split=0", true);
+  EXPECT_EQ(whole->count("split_fan_triangles"), 0);
+  EXPECT_EQ(verdictsDiffering(split->stencil, whole->stencil), 0u);
+}
+
 struct SphereCost {
   long long shadowCase, sides, darkCap, lightCap;
 };
