@@ -76,6 +76,13 @@ PreparedCaster prepareCaster(const Mesh& mesh) {
   return result;
 }
 
+std::vector<OracleObject> oracleObjects(const Scene& scene, double time) {
+  std::vector<OracleObject> objects;
+  for (const SceneObject& o : scene.objects)
+    objects.push_back({&o.mesh, o.modelAt(time), o.casts, o.receives});
+  return objects;
+}
+
 glm::mat4 SceneObject::modelAt(double time) const {
   const float t = static_cast<float>(time);
   glm::mat4 m = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, bob * std::sin(t), 0.0f)) * model;
@@ -94,7 +101,6 @@ class LineReader {
       : words_(std::move(words)), where_(std::move(where)) {}
 
   [[noreturn]] void fail(const std::string& message) const { throw SceneError(where_ + ": " + message); }
-  const std::string& where() const { return where_; }
   bool done() const { return next_ == words_.size(); }
   const std::string& peek() const { return words_[next_]; }
 
@@ -115,15 +121,6 @@ class LineReader {
     if (!(value > 0.0f)) fail("expected " + what + " greater than 0, got " + format(value));
     return value;
   }
-  int count(const std::string& what, int minimum) {
-    const std::string w = word(what);
-    int value = 0;
-    const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), value);
-    if (ec != std::errc() || end != w.data() + w.size() || value < minimum)
-      fail("expected " + what + " (a whole number, at least " + std::to_string(minimum) + "), got '" + w +
-           "'");
-    return value;
-  }
   glm::vec3 vec3(const std::string& what) {
     const float x = number(what + " x"), y = number(what + " y"), z = number(what + " z");
     return {x, y, z};
@@ -134,7 +131,8 @@ class LineReader {
     return glm::normalize(d);
   }
   glm::vec3 color() {
-    const glm::vec3 c = vec3("a colour R G B");
+    const float r = number("the colour's R"), g = number("the colour's G"), b = number("the colour's B");
+    const glm::vec3 c(r, g, b);
     if (glm::any(glm::lessThan(c, glm::vec3(0.0f)))) fail("expected a colour R G B of 0 or more each");
     return c;
   }
@@ -172,28 +170,30 @@ class ShapeParams {
                   (list.empty() ? std::string("none") : list));
       }
       if (!seen_.insert(key).second) line.fail("parameter '" + key + "' given twice");
-      values_[key] = position_(line);
+      values_[key] = numbers(line);
     }
   }
   float positive(const std::string& key, float fallback) { return get(key, fallback, true); }
-  float number(const std::string& key, float fallback) { return get(key, fallback, false); }
   int count(const std::string& key, int fallback, int minimum) {
     if (!values_.count(key)) return fallback;
-    const float v = values_[key][0];
-    if (v != std::floor(v) || v < static_cast<float>(minimum))
-      line_.fail("expected " + key + " to be a whole number, at least " + std::to_string(minimum) + ", got " +
-                 LineReader::format(v));
+    const float v = get(key, 0.0f, false);
+    // Whole numbers above 2^24 no longer have a float each.
+    if (v != std::floor(v) || v < static_cast<float>(minimum) || v > 16777216.0f)
+      line_.fail("expected " + key + " to be a whole number, at least " + std::to_string(minimum) +
+                 " and at most 16777216, got " + LineReader::format(v));
     return static_cast<int>(v);
   }
   glm::vec3 half(const std::string& key, float fallback) {
     if (!values_.count(key)) return glm::vec3(fallback);
     const std::vector<float>& v = values_[key];
+    if (v.size() != 1 && v.size() != 3)
+      line_.fail("expected one or three numbers after " + key + ", got " + std::to_string(v.size()));
     return v.size() == 3 ? glm::vec3(v[0], v[1], v[2]) : glm::vec3(v[0]);
   }
 
  private:
   // A key takes the numbers up to the next word that is not a number (box half takes 1 or 3).
-  static std::vector<float> position_(LineReader& line) {
+  static std::vector<float> numbers(LineReader& line) {
     std::vector<float> numbers{line.number("a number")};
     while (!line.done()) {
       float v = 0.0f;
@@ -437,6 +437,7 @@ Scene parseScene(std::string_view text, const std::filesystem::path& file) {
   scene.file = file;
   const std::string name = file.string();
   bool haveCamera = false, haveAmbient = false;
+  bool inObject = false;  // the last unindented line was an object: indented lines are its settings
   std::vector<int> objectLines;
   std::istringstream in{std::string(text)};
   int lineNumber = 0;
@@ -448,11 +449,11 @@ Scene parseScene(std::string_view text, const std::filesystem::path& file) {
     if (line.done()) continue;
     const bool indented = content[0] == ' ' || content[0] == '\t';
     if (indented) {
-      if (scene.objects.empty())
-        line.fail("an indented line belongs to an object, and no object came before it");
+      if (!inObject) line.fail("an indented line is an object's setting, and no object line is above it");
       readObjectLine(line, scene.objects.back());
       continue;
     }
+    inObject = false;
     const std::string keyword = line.word("a keyword");
     if (keyword == "camera") {
       if (haveCamera) line.fail("a second camera line; a scene has one camera");
@@ -478,6 +479,7 @@ Scene parseScene(std::string_view text, const std::filesystem::path& file) {
       }
       scene.objects.push_back(std::move(object));
       objectLines.push_back(lineNumber);
+      inObject = true;
     } else {
       line.fail("unknown keyword '" + keyword +
                 "'; expected camera, ambient, light or object (settings of an object are indented)");

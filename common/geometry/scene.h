@@ -17,6 +17,7 @@
 
 #include "geometry/adjacency.h"
 #include "geometry/mesh.h"
+#include "geometry/shadow_oracle.h"
 
 namespace stencil {
 
@@ -87,6 +88,10 @@ struct Scene {
   std::vector<SceneLight> lights;
   std::vector<SceneObject> objects;
 };
+
+// The scene at a time as the shadow oracle sees it (geometry/shadow_oracle.h): every object's
+// drawn mesh at its model matrix then, with its casts and receives. Points into the scene.
+std::vector<OracleObject> oracleObjects(const Scene&, double time);
 
 // Reads a scene file (the format is documented in docs/scenes.md). OBJ paths are relative to
 // the scene file. Throws SceneError ("FILE:LINE: what is wrong") for anything it cannot use;

@@ -105,8 +105,8 @@ std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objects,
       // Start the shadow ray a hair off the surface, on the side the camera sees, so the
       // receiver does not shadow itself through rounding.
       const glm::vec3 point = ray.origin + hit->t * ray.direction;
-      if (light.w != 0.0f && glm::length(point - glm::vec3(light) / light.w) > lightRadius) {
-        c = PixelClass::Other;
+      if (light.w != 0.0f && glm::distance(point, glm::vec3(light) / light.w) > lightRadius) {
+        c = PixelClass::OutOfReach;
         continue;
       }
       const glm::vec3 towardsCamera =
@@ -150,6 +150,8 @@ std::vector<std::uint8_t> oraclePicture(const std::vector<PixelClass>& oracle,
         c = {40, 60, 140};
       else if (oracle[i] == PixelClass::Other)
         c = {110, 100, 90};
+      else if (oracle[i] == PixelClass::OutOfReach)
+        c = {60, 60, 60};
       else
         c = {0, 0, 0};
       rgba.insert(rgba.end(), {c.r, c.g, c.b, 255});

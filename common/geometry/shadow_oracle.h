@@ -18,6 +18,9 @@ enum class PixelClass : std::uint8_t {
   Other,     // it meets an object that receives no shadow (a planar caster, say)
   Lit,       // it meets a receiver, and the way to the light is free
   Shadowed,  // it meets a receiver, and a caster blocks the way to the light
+  // It meets a receiver beyond a bounded point light's radius: no light reaches it, so neither
+  // lit nor shadowed is claimed (a method may skip shadows there).
+  OutOfReach,
 };
 
 struct OracleObject {
@@ -32,9 +35,8 @@ struct OracleObject {
 
 // The class of every pixel centre of a size.x by size.y image seen through viewProjection
 // (GL's conventions: clip space -1..1), top row first like Image. Cast shadows only: a
-// receiver facing away from the light is still Lit unless a caster is in the way. A point light
-// with a finite radius reaches nothing beyond it: a receiver there is Other, neither lit nor
-// shadowed by that light.
+// receiver facing away from the light is still Lit unless a caster is in the way.
+// lightRadius bounds a point light (geometry/scene.h, SceneLight::radius).
 std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>&, const glm::vec4& light,
                                        const glm::mat4& viewProjection, glm::ivec2 size,
                                        float lightRadius = std::numeric_limits<float>::infinity());

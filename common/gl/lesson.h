@@ -97,9 +97,10 @@ class Frame {
   // under "counts" in --stats: work that draw calls and triangles do not show.
   void count(std::string_view name, std::uint64_t amount = 1);
   // Saves the stencil as it is now as the shadow mask NAME.png under --mask-out DIR (white where
-  // the stencil is 0, lit; black elsewhere), for the last frame of a headless run; does nothing
-  // otherwise. Scene lessons call it once per light with "light-<i>", i the light's index in the
-  // scene, after that light's shadow is in the stencil: tests compare it with a ray cast.
+  // the stencil is 0, lit; black elsewhere), in the last frame of a headless run or of a window
+  // run with --frames; does nothing otherwise. Scene lessons call it once per light with "light-<i>", i the
+  // light's index in the scene, after that light's shadow is in the stencil: tests compare it with a ray
+  // cast.
   void shadowMask(std::string_view name);
 
   // How the session saves shadow masks; empty when they are not wanted.
@@ -122,7 +123,7 @@ struct ShadowCheck {
   // Shadow-volume lessons keep only the shadow in the stencil; where a receiver is visible is
   // the depth buffer's business. Then only the pixels where the oracle sees a receiver are judged.
   bool judgeReceiversOnly = false;
-  // A point light's bounds: receivers beyond them get none of its light and are not judged.
+  // A bounded point light's reach (SceneLight::radius): beyond it no shadow is claimed.
   float lightRadius = std::numeric_limits<float>::infinity();
 };
 

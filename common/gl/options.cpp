@@ -168,7 +168,8 @@ std::string helpText(const LessonInfo& info, const std::string& program, bool re
   if (readsScenes)
     out << "  --mask-out DIR           each light's shadow mask as DIR/light-<i>.png (i from 0): the\n"
         << "                           stencil once that light's shadow is in it, white where it is 0\n"
-        << "                           (lit), black elsewhere (headless runs: the last frame)\n";
+        << "                           (lit), black elsewhere (of the last frame: headless, or a\n"
+        << "                           window with --frames)\n";
   out << "\n"
       << "  --oracle FILE.png        check the shadows against a CPU ray cast of the same scene,\n"
       << "                           pixel by pixel; exit 1 if they differ off the edges; the\n"

@@ -211,6 +211,7 @@ int runWindow(Session& s) {
       last = now;
 
       const int step = std::min(st.passStep, static_cast<int>(s.info.passes.size()) - 1);
+      s.saveShadowMasks = cl.frames && frame + 1 >= *cl.frames;  // --mask-out: the last frame, as headless
       s.renderFrame(st.time, {.measure = false,
                               .captureAll = false,
                               .captureOnly = step >= 0 ? std::optional<std::size_t>(step) : std::nullopt});

@@ -4,7 +4,10 @@
 // closed volume (sides, the triangle as the near cap, the triangle pushed to infinity as the far
 // cap), counted z-fail with wrapping operations, the volumes pushed back by a polygon offset so a
 // cap on a visible surface counts as behind it. Slow, but right for open meshes too, as long as
-// no count reaches 256.
+// no count reaches 256. Variant z-pass counts the faces in front instead (Kilgard's z-pass), to
+// show that the hard-case files of the eye in a volume and the near plane cutting one break it. Not right
+// everywhere on the casters themselves: the offset also pushes a volume's side behind a visible face nearly
+// in its plane (a face almost edge-on to the light).
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "geometry/shadow_volume.h"
@@ -81,9 +84,15 @@ class SceneLesson : public Lesson {
       glDepthMask(GL_FALSE);
       glEnable(GL_STENCIL_TEST);
       glStencilFunc(GL_ALWAYS, 0, 0xFF);
-      glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
-      glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
-      glEnable(GL_DEPTH_CLAMP);  // the far caps lie at infinity, beyond a finite far plane
+      if (frame.on("zpass")) {
+        // z-pass: count the faces in front of the visible surface, entering up, leaving down.
+        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+      } else {
+        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+        glEnable(GL_DEPTH_CLAMP);  // the far caps lie at infinity, beyond a finite far plane
+      }
       // A near cap lies on its caster's surface: pushed back a little, it always counts as behind
       // it (whichever shader computed which depth), so a lit surface does not shadow itself.
       glEnable(GL_POLYGON_OFFSET_FILL);
@@ -120,11 +129,9 @@ class SceneLesson : public Lesson {
 
   std::optional<ShadowCheck> shadowCheck(const Frame& frame) const override {
     ShadowCheck check;
-    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-      const SceneObject& o = scene_.objects[i];
-      check.objects.push_back({&o.mesh, o.modelAt(frame.time), o.casts, o.receives});
-    }
+    check.objects = oracleObjects(scene_, frame.time);
     check.light = scene_.lights.back().position;  // the stencil holds the last light's shadow
+    check.lightRadius = scene_.lights.back().radius;
     check.litInStencil = [](std::uint8_t s) { return s == 0; };
     check.judgeReceiversOnly = true;
     return check;
@@ -160,7 +167,10 @@ LessonInfo lessonInfo() {
   info.id = "99-scene-test";
   info.title = "Scene test lesson";
   info.summary = "Renders a scene file with per-triangle z-fail volumes (tests only).";
-  info.variants = {{"default", "every light's shadow", {}}};
+  info.options = {{"zpass", 'Z', "count z-pass (off: z-fail)", 0}};
+  info.variants = {
+      {"z-fail", "every light's shadow, counted z-fail", {}},
+      {"z-pass", "counted z-pass: wrong with the eye in a volume or the near plane in one", {{"zpass", 1}}}};
   info.passes = {"ambient", "volumes", "light"};
   info.camera = orbitCameraOf(builtInScene().camera);
   return info;

@@ -2,6 +2,8 @@
 // from --scene (or none), the scene's camera, and the per-light shadow masks of --mask-out.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "lesson_run.h"
@@ -102,4 +104,23 @@ TEST(SceneLesson, OracleAgreesOnTheSceneFromTheFile) {
       runLesson(SCENE_LESSON, "oracle",
                 "--scene " + scenes + "/builtin.scene --oracle " + (dir / "oracle.png").string());
   if (!run) GTEST_SKIP() << "no GL context";
+}
+
+// What preparing the casters did is printed, one line each, unless --quiet.
+TEST(SceneLesson, CasterNotesArePrintedUnlessQuiet) {
+  const auto dir = maskDir("");
+  std::filesystem::create_directories(dir);
+  const std::string scene = scenes + "/hard/split-cube.scene", log = (dir / "log.txt").string();
+  const std::string base = std::string(SCENE_LESSON) + " --headless --size 32x24 --scene " + scene;
+  const int status = std::system((base + " 2> " + log).c_str());
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 77) GTEST_SKIP() << "no GL context";
+  ASSERT_EQ(status, 0);
+  std::ifstream in(log);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find(scene + ": object 'cube': welded 36 vertices into 8 (vertices split at seams)\n"),
+            std::string::npos)
+      << text;
+  ASSERT_EQ(std::system((base + " --quiet 2> " + log).c_str()), 0);
+  std::ifstream quiet(log);
+  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(quiet)), std::istreambuf_iterator<char>()), "");
 }

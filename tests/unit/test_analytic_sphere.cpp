@@ -85,4 +85,33 @@ TEST(Oracle, FarPlaneAtInfinitySeesWhatAFiniteOneSees) {
   EXPECT_GT(std::count(infinite.begin(), infinite.end(), PixelClass::Lit), 0);
 }
 
+// A bounded point light claims nothing beyond its radius: those receiver pixels are OutOfReach,
+// and the others keep their class.
+TEST(Oracle, NothingIsClaimedBeyondAPointLightsRadius) {
+  const Mesh ground = makePlane(6.0f, 1);
+  const Mesh box = makeCube(0.5f);
+  const std::vector<OracleObject> objects{{&ground, glm::mat4(1), false, true},
+                                          {&box, glm::translate(glm::mat4(1), {0, 1, 0}), true, true}};
+  const glm::mat4 viewProjection = glm::perspective(0.9f, 4.0f / 3.0f, 0.5f, 100.0f) *
+                                   glm::lookAt(glm::vec3(6, 6, 8), glm::vec3(0), glm::vec3(0, 1, 0));
+  const glm::vec4 light(0.5f, 3.0f, 0.5f, 1.0f);
+  const glm::ivec2 size(64, 48);
+  const auto unbounded = classifyPixels(objects, light, viewProjection, size);
+  const auto bounded = classifyPixels(objects, light, viewProjection, size, 4.0f);
+  std::size_t outOfReach = 0;
+  for (std::size_t i = 0; i < bounded.size(); ++i) {
+    if (bounded[i] == PixelClass::OutOfReach) {
+      ++outOfReach;
+      EXPECT_TRUE(unbounded[i] == PixelClass::Lit || unbounded[i] == PixelClass::Shadowed);
+    } else {
+      EXPECT_EQ(bounded[i], unbounded[i]);
+    }
+  }
+  EXPECT_GT(outOfReach, 0u);
+  EXPECT_GT(std::count(bounded.begin(), bounded.end(), PixelClass::Lit), 0);
+  // A directional light has no bounds: the radius is ignored.
+  EXPECT_EQ(classifyPixels(objects, glm::vec4(0, 1, 0, 0), viewProjection, size, 4.0f),
+            classifyPixels(objects, glm::vec4(0, 1, 0, 0), viewProjection, size));
+}
+
 }  // namespace

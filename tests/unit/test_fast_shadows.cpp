@@ -221,14 +221,14 @@ TEST(LightBounds, TheOracleJudgesOnlyWithinTheRadius) {
                             glm::lookAt(glm::vec3(0, 10, 0), glm::vec3(0), glm::vec3(0, 0, -1));
   const glm::vec4 light(0, 1, 0, 1);  // one above the ground's centre
   const float radius = 2.0f;          // reaches a disc of radius sqrt(3) on the ground
-  std::size_t lit = 0, other = 0;
+  std::size_t lit = 0, outOfReach = 0;
   for (const PixelClass c :
        classifyPixels({{&ground, glm::mat4(1), false, true}}, light, topDown, {60, 60}, radius)) {
     lit += c == PixelClass::Lit;
-    other += c == PixelClass::Other;
+    outOfReach += c == PixelClass::OutOfReach;
   }
   EXPECT_NEAR(static_cast<double>(lit), 3600.0 * M_PI * 3.0 / 36.0, 40.0);
-  EXPECT_EQ(lit + other, 3600u);
+  EXPECT_EQ(lit + outOfReach, 3600u);
 }
 
 // The sphere's nearest and farthest points along the view, at their window depths.

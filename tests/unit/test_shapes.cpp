@@ -564,3 +564,36 @@ TEST(ScreenQuad, CoversClipSpaceFacingPlusZ) {
   }
   EXPECT_FLOAT_EQ(area, 4.0f);
 }
+
+// Stairs: a closed solid whose volume is the sum of its columns, step k (from 1) k rises high.
+TEST(Stairs, ClosedSolidOfTheRightVolumeWithFlatOutwardFaces) {
+  using namespace stencil;
+  for (const int steps : {1, 2, 7}) {
+    const float width = 1.5f, rise = 0.25f, run = 0.5f;
+    const Mesh m = makeStairs(steps, width, rise, run);
+    const auto n = static_cast<std::size_t>(steps);
+    EXPECT_EQ(m.positions.size(), 16 * n + 8);
+    EXPECT_EQ(m.triangleCount(), 12 * n);
+    const Mesh welded = weldByPosition(m).mesh;
+    EXPECT_EQ(welded.positions.size(), 6 * n + 2);
+    const EdgeAdjacency adj = buildEdgeAdjacency(welded.indices, welded.positions.size());
+    EXPECT_TRUE(adj.report.closedManifold()) << steps << " steps";
+    EXPECT_EQ(static_cast<long>(welded.positions.size()) - static_cast<long>(adj.edges.size()) +
+                  static_cast<long>(welded.triangleCount()),
+              2);
+    EXPECT_NEAR(signedVolume(m), double(width) * rise * run * steps * (steps + 1) / 2.0, 1e-5);
+    const Aabb box = boundsOf(m.positions);
+    EXPECT_FLOAT_EQ(box.min.x, -0.5f * run * static_cast<float>(steps));
+    EXPECT_FLOAT_EQ(box.max.y, 0.5f * rise * static_cast<float>(steps));
+    EXPECT_FLOAT_EQ(box.max.z, 0.5f * width);
+    for (std::size_t t = 0; t < m.triangleCount(); ++t) {
+      const std::uint32_t* i = &m.indices[3 * t];
+      const glm::vec3 face =
+          glm::cross(m.positions[i[1]] - m.positions[i[0]], m.positions[i[2]] - m.positions[i[0]]);
+      ASSERT_GT(glm::length(face), 0.0f) << "triangle " << t;
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(glm::dot(glm::normalize(face), m.normals[i[k]]), 1.0f, 1e-6f);
+    }
+  }
+  EXPECT_THROW(makeStairs(0, 1, 1, 1), std::invalid_argument);
+  EXPECT_THROW(makeStairs(3, 1, -1, 1), std::invalid_argument);
+}

@@ -1,0 +1,151 @@
+// Checks a scene lesson's shadows against a CPU ray cast, light by light:
+//
+//   scene_oracle [--expect-failure] [--variant NAME] LESSON SCENE WxH [TIME]
+//
+// runs LESSON --headless --quiet --scene SCENE --size WxH --time TIME --mask-out DIR (and
+// --variant NAME when given), then for each light i compares DIR/light-<i>.png (white: lit) with
+// classifyPixels for that light, seen through the scene's camera as the framework converts it
+// (orbitCameraOf). Only pixels where the ray cast sees a receiver the light reaches (within a point
+// light's radius) are judged; pixels on an edge of its picture are forgiven. One line per light; exit 0 when
+// all agree, 1 when one does not (with
+// --expect-failure the other way round: the scene shows an artifact of the lesson), 2 for bad
+// input, 77 when the lesson cannot get a GL context.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <string>
+
+#include "geometry/scene.h"
+#include "geometry/shadow_oracle.h"
+#include "gl/image.h"
+#include "gl/lesson.h"
+
+using namespace stencil;
+
+namespace {
+
+std::string shellQuoted(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+std::string describe(const glm::vec4& light) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%s %g %g %g", light.w == 0.0f ? "directional" : "point", light.x, light.y,
+                light.z);
+  return buf;
+}
+
+// 0: every light agrees, 1: one does not, 2: the lesson wrote no mask for a light.
+int compareLights(const Scene& scene, const std::filesystem::path& masks, glm::ivec2 size, double time) {
+  const OrbitCamera camera = orbitCameraOf(scene.camera);
+  const glm::mat4 viewProjection =
+      camera.projection(static_cast<float>(size.x) / static_cast<float>(size.y)) * camera.view();
+  const std::vector<OracleObject> objects = oracleObjects(scene, time);
+  int result = 0;
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    const std::string name = "light-" + std::to_string(i);
+    const std::filesystem::path maskFile = masks / (name + ".png");
+    if (!std::filesystem::exists(maskFile)) {
+      std::cout << name << " (" << describe(scene.lights[i].position) << "): no mask " << maskFile.string()
+                << " (the lesson calls Frame::shadowMask(\"" << name
+                << "\") once that light's shadow is in the stencil)\n";
+      result = 2;
+      continue;
+    }
+    const Image mask = readPng(maskFile, 1);
+    if (mask.width != size.x || mask.height != size.y) {
+      std::cout << name << ": the mask is " << mask.width << "x" << mask.height
+                << ", not the size asked for\n";
+      result = 2;
+      continue;
+    }
+    const std::vector<PixelClass> oracle =
+        classifyPixels(objects, scene.lights[i].position, viewProjection, size, scene.lights[i].radius);
+    std::vector<bool> lit(oracle.size());
+    for (std::size_t p = 0; p < lit.size(); ++p) {
+      const bool receiver = oracle[p] == PixelClass::Lit || oracle[p] == PixelClass::Shadowed;
+      lit[p] = receiver && mask.pixels[p] == 255;
+    }
+    const OracleReport r = compareWithOracle(oracle, lit, size);
+    Image picture(size.x, size.y, 4);
+    picture.pixels = oraclePicture(oracle, lit, size);
+    const std::filesystem::path pictureFile = masks / (name + "-oracle.png");
+    writePng(pictureFile, picture);
+    std::cout << name << " (" << describe(scene.lights[i].position) << "): " << (r.passed() ? "ok" : "FAILED")
+              << ", " << r.receiverPixels << " receiver pixels, " << r.shadowedPixels << " shadowed; "
+              << r.disagreements << " disagree, " << r.onEdges << " of them on edges ("
+              << pictureFile.string() << ")\n";
+    if (!r.passed() && result == 0) result = 1;
+  }
+  return result;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  bool expectFailure = false;
+  std::string variant;
+  while (!args.empty() && args.front().starts_with("--")) {
+    if (args.front() == "--expect-failure") {
+      expectFailure = true;
+    } else if (args.front() == "--variant" && args.size() > 1) {
+      args.erase(args.begin());
+      variant = args.front();
+    } else {
+      break;
+    }
+    args.erase(args.begin());
+  }
+  if (args.size() < 3 || args.size() > 4) {
+    std::cerr << "usage: scene_oracle [--expect-failure] [--variant NAME] LESSON SCENE WxH [TIME]\n";
+    return 2;
+  }
+  const std::string lesson = args[0], sceneFile = args[1], sizeText = args[2];
+  const double time = args.size() == 4 ? std::atof(args[3].c_str()) : 1.0;
+  glm::ivec2 size;
+  if (std::sscanf(sizeText.c_str(), "%dx%d", &size.x, &size.y) != 2 || size.x < 1 || size.y < 1) {
+    std::cerr << "scene_oracle: error: the size is WxH, got '" << sizeText << "'\n";
+    return 2;
+  }
+  Scene scene;
+  try {
+    scene = loadScene(sceneFile);
+  } catch (const SceneError& e) {
+    std::cerr << "scene_oracle: error: " << e.what() << "\n";
+    return 2;
+  }
+
+  const std::filesystem::path masks =
+      std::filesystem::temp_directory_path() /
+      ("scene-oracle-" + std::filesystem::path(lesson).filename().string() + "-" +
+       std::filesystem::path(sceneFile).stem().string() + "-" + std::to_string(getpid()));
+  std::filesystem::remove_all(masks);
+  const std::string command =
+      shellQuoted(lesson) + " --headless --quiet --scene " + shellQuoted(sceneFile) + " --size " + sizeText +
+      " --time " + std::to_string(time) + " --mask-out " + shellQuoted(masks.string()) +
+      (variant.empty() ? std::string() : std::string(" --variant ") + shellQuoted(variant));
+  const int status = std::system(command.c_str());
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 77) {
+    std::cout << "no GL context: skipped\n";
+    return 77;
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    std::cout << "the lesson failed: " << command << "\n";
+    return 1;
+  }
+  const int result = compareLights(scene, masks, size, time);
+  if (result == 2) return 1;  // a missing mask is a lesson's bug, whatever was expected
+  if (expectFailure) {
+    std::cout << (result == 1 ? "the ray cast disagrees, as expected\n"
+                              : "expected the ray cast to disagree, and it agrees\n");
+    return result == 1 ? 0 : 1;
+  }
+  return result;
+}

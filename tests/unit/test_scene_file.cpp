@@ -1,0 +1,327 @@
+// Scene files (docs/scenes.md): what a good file gives, one clear FILE:LINE message for each
+// kind of mistake, OBJ meshes with what breaks the shadow-volume requirements, and every file
+// under tests/scenes/hard read without error.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <regex>
+#include <string>
+
+#include "geometry/scene.h"
+#include "geometry/shadow_volume.h"
+
+namespace {
+
+using namespace stencil;
+
+const std::filesystem::path scenes = SCENES_DIR;
+
+std::string errorOf(const std::string& text, const std::filesystem::path& file = "test.scene") {
+  try {
+    parseScene(text, file);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+bool mentions(const CasterReport& report, const std::string& text) {
+  return std::any_of(report.messages.begin(), report.messages.end(),
+                     [&](const std::string& m) { return m.find(text) != std::string::npos; });
+}
+
+void expectNear(const glm::mat4& a, const glm::mat4& b) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) EXPECT_NEAR(a[i][j], b[i][j], 1e-5f) << "column " << i << " row " << j;
+}
+
+const char* const header =
+    "camera eye 0 2 5 target 0 0 0 near 0.1\n"
+    "light point 0 4 0\n";
+
+TEST(SceneFile, AGoodFile) {
+  const Scene s = parseScene(
+      "# a comment line\n"
+      "camera eye 1 2 3 target 0 1 0 up 0 1 0 fovy 60 near 0.5 far 80  # trailing comment\n"
+      "ambient 0.2 0.25 0.3\n"
+      "\n"
+      "light point 1 5 2 color 1 0.5 0.25 radius 12\n"
+      "light directional 0 2 0\n"
+      "object ground plane half 6 divisions 3\n"
+      "  casts no\n"
+      "  color 0.5 0.5 0.5\n"
+      "object ball sphere radius 0.5 slices 12 stacks 6\n"
+      "\tscale 2\n"
+      "  rotate 90 0 0 1\n"
+      "  translate 1 2 3\n"
+      "  spin 45 1 0 0\n"
+      "  bob 0.25\n"
+      "  receives no\n"
+      "object crate box half 1 2 3\n"
+      "object can cylinder radius 0.3 height 1 slices 10\n"
+      "object hat cone radius 0.3 height 1 slices 10\n"
+      "object ring torus major 1 minor 0.2 segments 10 sides 6\n"
+      "object flight stairs steps 4 width 2 rise 0.25 run 0.5\n",
+      "dir/good.scene");
+  EXPECT_EQ(s.file, std::filesystem::path("dir/good.scene"));
+  EXPECT_EQ(s.camera.eye, glm::vec3(1, 2, 3));
+  EXPECT_EQ(s.camera.target, glm::vec3(0, 1, 0));
+  EXPECT_FLOAT_EQ(s.camera.fovyDeg, 60.0f);
+  EXPECT_FLOAT_EQ(s.camera.nearPlane, 0.5f);
+  EXPECT_FLOAT_EQ(s.camera.farPlane, 80.0f);
+  EXPECT_FALSE(s.camera.orthographic);
+  EXPECT_FALSE(s.camera.mirrored);
+  EXPECT_EQ(s.ambient, glm::vec3(0.2f, 0.25f, 0.3f));
+
+  ASSERT_EQ(s.lights.size(), 2u);
+  EXPECT_EQ(s.lights[0].position, glm::vec4(1, 5, 2, 1));
+  EXPECT_EQ(s.lights[0].color, glm::vec3(1, 0.5f, 0.25f));
+  EXPECT_FLOAT_EQ(s.lights[0].radius, 12.0f);
+  EXPECT_EQ(s.lights[1].position, glm::vec4(0, 1, 0, 0)) << "a unit direction towards the light";
+  EXPECT_EQ(s.lights[1].color, glm::vec3(1.0f));
+  EXPECT_TRUE(std::isinf(s.lights[1].radius));
+
+  ASSERT_EQ(s.objects.size(), 7u);
+  const SceneObject& ground = s.objects[0];
+  EXPECT_EQ(ground.name, "ground");
+  EXPECT_EQ(ground.mesh.triangleCount(), 2u * 3 * 3);
+  EXPECT_FALSE(ground.casts);
+  EXPECT_TRUE(ground.receives);
+  EXPECT_EQ(ground.color, glm::vec3(0.5f));
+  EXPECT_TRUE(ground.caster.mesh.positions.empty()) << "only casters are prepared";
+
+  const SceneObject& ball = s.objects[1];
+  EXPECT_EQ(ball.mesh.triangleCount(), 2u * 12 * 5);
+  EXPECT_TRUE(ball.casts);
+  EXPECT_FALSE(ball.receives);
+  // Each transform line applies after the ones above it.
+  const glm::mat4 expected = glm::translate(glm::mat4(1), {1, 2, 3}) *
+                             glm::rotate(glm::mat4(1), glm::radians(90.0f), {0, 0, 1}) *
+                             glm::scale(glm::mat4(1), glm::vec3(2));
+  expectNear(ball.model, expected);
+  EXPECT_FLOAT_EQ(ball.spinDegPerSecond, 45.0f);
+  EXPECT_EQ(ball.spinAxis, glm::vec3(1, 0, 0));
+  EXPECT_FLOAT_EQ(ball.bob, 0.25f);
+  EXPECT_TRUE(ball.caster.report.closed());
+  EXPECT_FALSE(ball.caster.mesh.positions.empty());
+
+  const SceneObject& crate = s.objects[2];
+  EXPECT_EQ(crate.mesh.triangleCount(), 12u);
+  const auto [lo, hi] = std::minmax_element(crate.mesh.positions.begin(), crate.mesh.positions.end(),
+                                            [](const glm::vec3& a, const glm::vec3& b) { return a.z < b.z; });
+  EXPECT_FLOAT_EQ(lo->z, -3.0f);
+  EXPECT_FLOAT_EQ(hi->z, 3.0f);
+  EXPECT_EQ(crate.caster.report.weldedVertices, 8u);
+  EXPECT_EQ(s.objects[3].mesh.triangleCount(), 4u * 10);
+  EXPECT_EQ(s.objects[4].mesh.triangleCount(), 2u * 10);
+  EXPECT_EQ(s.objects[5].mesh.triangleCount(), 2u * 10 * 6);
+  EXPECT_EQ(s.objects[6].mesh.triangleCount(), 12u * 4);
+  for (const SceneObject& o : s.objects)
+    if (o.casts) {
+      EXPECT_TRUE(o.caster.report.closed()) << o.name;
+    }
+}
+
+TEST(SceneFile, ParametersHaveDefaultsAndTheOrthographicMirroredCamera) {
+  const Scene s = parseScene(
+      "camera eye 0 5 5 target 0 0 0 near 1 far 30 orthographic 8 mirrored\n"
+      "light directional 1 1 0 color 0.5 0.5 0.5\n"
+      "object a sphere\n",
+      "x.scene");
+  EXPECT_TRUE(s.camera.orthographic);
+  EXPECT_FLOAT_EQ(s.camera.orthoHeight, 8.0f);
+  EXPECT_TRUE(s.camera.mirrored);
+  EXPECT_FLOAT_EQ(s.camera.fovyDeg, 45.0f);
+  EXPECT_EQ(s.ambient, glm::vec3(0.1f));
+  EXPECT_NEAR(glm::length(glm::vec3(s.lights[0].position)), 1.0f, 1e-6f);
+  EXPECT_EQ(s.objects[0].mesh.triangleCount(), 2u * 32 * 15);
+  EXPECT_EQ(s.objects[0].model, glm::mat4(1.0f));
+}
+
+TEST(SceneFile, TheOracleSeesTheObjectsWhereTheyAreAtThatTime) {
+  const Scene s = parseScene(
+      std::string(header) + "object ground plane\n  casts no\nobject ball sphere\n  bob 0.5\n  receives no\n",
+      "x.scene");
+  const std::vector<OracleObject> objects = oracleObjects(s, 2.0);
+  ASSERT_EQ(objects.size(), 2u);
+  EXPECT_EQ(objects[0].mesh, &s.objects[0].mesh);
+  EXPECT_FALSE(objects[0].casts);
+  EXPECT_TRUE(objects[0].receives);
+  EXPECT_TRUE(objects[1].casts);
+  EXPECT_FALSE(objects[1].receives);
+  EXPECT_FLOAT_EQ(objects[1].model[3][1], 0.5f * std::sin(2.0f));
+  EXPECT_EQ(objects[1].model, s.objects[1].modelAt(2.0));
+}
+
+TEST(SceneFile, EveryMistakeIsOneLineWithFileLineAndWhatWasExpected) {
+  const std::string h = header;
+  const struct {
+    std::string text, message;
+  } cases[] = {
+      {h + "lamp 1 2 3\n", "test.scene:3: unknown keyword 'lamp'; expected camera, ambient, light or object"},
+      {"  translate 1 2 3\n" + h,
+       "test.scene:1: an indented line is an object's setting, and no object line"},
+      {h + "object a box\nlight point 1 2 3\n  translate 1 2 3\n",
+       "test.scene:5: an indented line is an object's setting, and no object line is above it"},
+      {h + "object a box half 1 2\n", "test.scene:3: expected one or three numbers after half, got 2"},
+      {h + "object a sphere slices 8 9\n", "test.scene:3: expected one number after slices, got 2"},
+      {"camera eye 0 2 5 target 0 0 0\nlight point 0 4 0\nobject a box\n",
+       "test.scene:1: expected the camera's eye, target and near"},
+      {"camera eye 0 2 x target 0 0 0 near 1\n",
+       "test.scene:1: expected the eye z (a finite number), got 'x'"},
+      {"camera eye 0 2 5 target 0 0 0 near 1 zoom 2\n", "test.scene:1: unknown camera setting 'zoom'"},
+      {"camera eye 0 2 5 target 0 0 0 near 1 up 1 0 0\n", "test.scene:1: expected up 0 1 0"},
+      {"camera eye 0 2 5 target 0 0 0 near 1 orthographic 5\n",
+       "test.scene:1: expected far with orthographic"},
+      {"camera eye 0 2 5 target 0 0 0 near 1 far 0.5\n", "test.scene:1: expected far beyond near"},
+      {"camera eye 0 5 0 target 0 0 0 near 1\n", "test.scene:1: expected the eye off the vertical"},
+      {"camera eye 0 2 5 target 0 0 0 near -1\n",
+       "test.scene:1: expected the near plane's distance greater than 0"},
+      {"camera eye 0 2 5 target 0 0 0 near 1 near 2\n", "test.scene:1: camera setting 'near' given twice"},
+      {h + "camera eye 0 2 5 target 0 0 0 near 1\n", "test.scene:3: a second camera line"},
+      {h + "light spot 1 2 3\n",
+       "test.scene:3: expected the light's type (point or directional), got 'spot'"},
+      {h + "light directional 0 0 0\n",
+       "test.scene:3: expected the direction towards the light to be a direction"},
+      {h + "light directional 0 1 0 radius 5\n", "test.scene:3: a directional light has no radius"},
+      {h + "light point 0 1 0 color 1 1\n", "test.scene:3: expected the colour's B at the end of the line"},
+      {h + "light point 0 1 0 color 1 -1 1\n", "test.scene:3: expected a colour R G B of 0 or more each"},
+      {h + "ambient 1 1 1 1\n", "test.scene:3: unexpected '1' at the end of the line"},
+      {h + "object a blob\n", "test.scene:3: unknown shape 'blob'; expected plane, box, sphere"},
+      {h + "object a sphere radius 0\n", "test.scene:3: expected radius greater than 0, got 0"},
+      {h + "object a sphere slices 2\n",
+       "test.scene:3: expected slices to be a whole number, at least 3 and at most 16777216, got 2"},
+      {h + "object a sphere slices 1e12\n", "test.scene:3: expected slices to be a whole number"},
+      {h + "object a sphere radius 1 radius 2\n", "test.scene:3: parameter 'radius' given twice"},
+      {h + "object a sphere size 2\n",
+       "test.scene:3: unknown parameter 'size' for sphere; expected radius, slices, stacks"},
+      {h + "object a torus major 1 minor 1\n",
+       "test.scene:3: expected the torus's minor radius less than its major"},
+      {h + "object a box\nobject a box\n", "test.scene:4: a second object named 'a'"},
+      {h + "object a box\n  scale 0\n", "test.scene:4: expected a scale other than 0"},
+      {h + "object a box\n  casts maybe\n",
+       "test.scene:4: expected whether it casts shadows (yes or no), got 'maybe'"},
+      {h + "object a box\n  wobble 1\n", "test.scene:4: unknown object setting 'wobble'; expected translate"},
+      {h + "object a box\n  rotate 30 0 0 0\n", "test.scene:4: expected the axis to be a direction"},
+      {h + "object a box\n  translate 1 2\n",
+       "test.scene:4: expected the translation z at the end of the line"},
+      {h + "object a box\n  translate 1 2 nan\n",
+       "test.scene:4: expected the translation z (a finite number)"},
+      {h + "object a mesh\n", "test.scene:3: expected an OBJ file name after 'mesh'"},
+      {h + "object a mesh missing.obj\n", "test.scene:3: cannot read mesh 'missing.obj': no such file"},
+      {"camera eye 0 2 5 target 0 0 0 near 1\nobject a box\n", "test.scene:2: the scene has no light"},
+      {h, "test.scene:2: the scene has no object"},
+      {"light point 0 4 0\nobject a box\n", "test.scene:2: the scene has no camera line"},
+  };
+  for (const auto& c : cases) {
+    const std::string error = errorOf(c.text);
+    EXPECT_EQ(error.rfind(c.message, 0), 0u)
+        << "got: " << error << "\nexpected it to start with: " << c.message;
+    EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+  }
+}
+
+TEST(SceneFile, AMissingFileIsNamed) {
+  try {
+    loadScene(scenes / "no-such.scene");
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("no-such.scene: cannot open the scene file"), std::string::npos);
+  }
+}
+
+// OBJ meshes, relative to the scene file, and what breaks the requirements of shadow volumes.
+Scene withMesh(const std::string& obj, const std::string& settings = "") {
+  return parseScene(std::string(header) + "object m mesh meshes/" + obj + "\n" + settings,
+                    scenes / "x.scene");
+}
+
+TEST(SceneFileObj, ACubeSplitAtSeamsIsWelded) {
+  const Scene s = withMesh("split-cube.obj");
+  const SceneObject& m = s.objects[0];
+  EXPECT_EQ(m.mesh.triangleCount(), 12u) << "quads fanned into triangles";
+  EXPECT_EQ(m.mesh.positions.size(), 36u) << "no normals in the file: each triangle its own vertices";
+  EXPECT_EQ(m.mesh.normals.size(), m.mesh.positions.size());
+  EXPECT_EQ(m.caster.report.weldedVertices, 8u);
+  EXPECT_TRUE(m.caster.report.closed());
+  EXPECT_TRUE(mentions(m.caster.report, "welded 36 vertices into 8"));
+  EXPECT_GT(signedVolume(m.mesh), 7.99);  // 2^3, wound outwards
+}
+
+TEST(SceneFileObj, AnOpenBoxIsKeptWithItsBorderEdgesReported) {
+  const Scene s = withMesh("open-box.obj");
+  const SceneObject& m = s.objects[0];
+  EXPECT_EQ(m.mesh.triangleCount(), 10u);
+  EXPECT_EQ(m.caster.report.borderEdges, 4u);
+  EXPECT_TRUE(m.caster.report.usable());
+  EXPECT_FALSE(m.caster.report.closed());
+  EXPECT_TRUE(mentions(m.caster.report, "open: 4 border edges extrude as silhouette edges"));
+}
+
+// Open meshes are kept, and handled: their border edges are silhouette edges whatever the light.
+TEST(SceneFileObj, AnOpenBoxsBorderEdgesAreOnEverySilhouette) {
+  const Scene s = withMesh("open-box.obj");
+  const PreparedCaster& c = s.objects[0].caster;
+  ASSERT_EQ(c.adjacency.borderEdgeIndices.size(), 4u);
+  for (const glm::vec4& light :
+       {glm::vec4(0, 5, 0, 1), glm::vec4(0, -5, 0, 1), glm::vec4(1, 0.2f, 0.3f, 0)}) {
+    const std::vector<SilhouetteEdge> silhouette = silhouetteEdges(c.adjacency, facesLight(c.mesh, light));
+    for (std::uint32_t e : c.adjacency.borderEdgeIndices) {
+      const Edge& border = c.adjacency.edges[e];
+      const bool found = std::any_of(silhouette.begin(), silhouette.end(), [&](const SilhouetteEdge& edge) {
+        return (edge.v0 == border.v0 && edge.v1 == border.v1) ||
+               (edge.v0 == border.v1 && edge.v1 == border.v0);
+      });
+      EXPECT_TRUE(found) << "border edge " << border.v0 << "-" << border.v1;
+    }
+  }
+}
+
+TEST(SceneFileObj, AnEdgeWithThreeFacesIsRefusedForACaster) {
+  const std::string error = [] {
+    try {
+      withMesh("three-faces.obj");
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  }();
+  EXPECT_NE(
+      error.find("x.scene:3: object 'm' cannot cast shadow volumes: not two-manifold: 1 edge shared by three "
+                 "or more faces"),
+      std::string::npos)
+      << error;
+  // Drawn only, it may stay.
+  const Scene s = withMesh("three-faces.obj", "  casts no\n");
+  EXPECT_EQ(s.objects[0].mesh.triangleCount(), 5u);
+}
+
+TEST(SceneFileObj, DegenerateTrianglesInsideAClosedMeshAreDropped) {
+  const Scene s = withMesh("degenerate-cube.obj");
+  const SceneObject& m = s.objects[0];
+  EXPECT_EQ(m.mesh.triangleCount(), 14u) << "drawn as written";
+  EXPECT_EQ(m.caster.report.droppedDegenerate, 2u);
+  EXPECT_EQ(m.caster.mesh.triangleCount(), 12u);
+  EXPECT_TRUE(m.caster.report.closed());
+  EXPECT_TRUE(mentions(m.caster.report, "dropped 2 degenerate triangles"));
+}
+
+// Every hard case is a file that reads: a broken one fails here, not in a lesson's test.
+TEST(SceneFile, EveryHardCaseReads) {
+  std::size_t files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(scenes / "hard")) {
+    if (entry.path().extension() != ".scene") continue;
+    ++files;
+    try {
+      const Scene s = loadScene(entry.path());
+      EXPECT_FALSE(s.lights.empty()) << entry.path();
+    } catch (const SceneError& e) {
+      ADD_FAILURE() << e.what();
+    }
+  }
+  EXPECT_GE(files, 15u);
+}
+
+}  // namespace
