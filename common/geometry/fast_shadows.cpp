@@ -30,20 +30,50 @@ std::vector<std::uint32_t> sideIndices(const Mesh& welded, const std::vector<Sil
   return indices;
 }
 
-std::vector<std::uint32_t> lightCapIndices(const Mesh& welded, const std::vector<bool>& lit) {
+std::vector<SilhouetteEdge> twoSidedSilhouetteEdges(const EdgeAdjacency& adjacency,
+                                                    const std::vector<bool>& lit) {
+  std::vector<SilhouetteEdge> edges;
+  for (const Edge& e : adjacency.edges) {
+    const bool lit0 = lit.at(static_cast<std::size_t>(e.face0));
+    if (e.face1 < 0) {  // face0 walks v0 -> v1; turned round when it faces away
+      edges.push_back(lit0 ? SilhouetteEdge{e.v0, e.v1} : SilhouetteEdge{e.v1, e.v0});
+      continue;
+    }
+    if (lit0 == lit.at(static_cast<std::size_t>(e.face1))) continue;
+    const SilhouetteEdge walked = lit0 ? SilhouetteEdge{e.v0, e.v1} : SilhouetteEdge{e.v1, e.v0};
+    edges.insert(edges.end(), {walked, walked});
+  }
+  return edges;
+}
+
+namespace {
+
+// Triangle t's indices plus offset, as it is or turned round.
+void addTriangle(std::vector<std::uint32_t>& indices, const Mesh& mesh, std::size_t t, std::uint32_t offset,
+                 bool turned) {
+  const std::uint32_t a = mesh.indices[3 * t] + offset, b = mesh.indices[3 * t + 1] + offset,
+                      c = mesh.indices[3 * t + 2] + offset;
+  if (turned)
+    indices.insert(indices.end(), {a, c, b});
+  else
+    indices.insert(indices.end(), {a, b, c});
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> lightCapIndices(const Mesh& welded, const std::vector<bool>& lit, bool twoSided) {
   std::vector<std::uint32_t> indices;
   for (std::size_t t = 0; t < lit.size(); ++t)
-    if (lit[t])
-      indices.insert(indices.end(), welded.indices.begin() + 3 * t, welded.indices.begin() + 3 * t + 3);
+    if (lit[t] || twoSided) addTriangle(indices, welded, t, 0, !lit[t]);
   return indices;
 }
 
-std::vector<std::uint32_t> backFaceDarkCapIndices(const Mesh& welded, const std::vector<bool>& lit) {
+std::vector<std::uint32_t> backFaceDarkCapIndices(const Mesh& welded, const std::vector<bool>& lit,
+                                                  bool twoSided) {
   const auto n = static_cast<std::uint32_t>(welded.positions.size());
   std::vector<std::uint32_t> indices;
   for (std::size_t t = 0; t < lit.size(); ++t)
-    if (!lit[t])
-      for (int k = 0; k < 3; ++k) indices.push_back(welded.indices[3 * t + k] + n);
+    if (!lit[t] || twoSided) addTriangle(indices, welded, t, n, lit[t]);
   return indices;
 }
 
@@ -103,6 +133,42 @@ DarkCap fanDarkCap(const Mesh& welded, const std::vector<SilhouetteEdge>& edges,
                                          glm::vec4(foot, 0.0f)});
   }
   return cap;
+}
+
+double solidAngle(const glm::vec3& eye, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+  const glm::dvec3 p = glm::dvec3(a) - glm::dvec3(eye), q = glm::dvec3(b) - glm::dvec3(eye),
+                   r = glm::dvec3(c) - glm::dvec3(eye);
+  const double lp = glm::length(p), lq = glm::length(q), lr = glm::length(r);
+  const double numerator = glm::dot(p, glm::cross(q, r));
+  const double denominator = lp * lq * lr + glm::dot(p, q) * lr + glm::dot(p, r) * lq + glm::dot(q, r) * lp;
+  return 2.0 * std::atan2(numerator, denominator);
+}
+
+int closeAroundLight(DarkCap& cap, const Mesh& welded, const std::vector<std::uint32_t>& lightCap,
+                     const glm::vec3& light) {
+  const auto n = static_cast<std::uint32_t>(welded.positions.size());
+  const auto at = [&](std::uint32_t i) { return welded.positions.at(i < n ? i : i - n); };
+  double total = 0.0;
+  const std::vector<std::uint32_t>* lists[] = {&lightCap, &cap.indices};
+  for (const std::vector<std::uint32_t>* list : lists)
+    for (std::size_t t = 0; t + 2 < list->size(); t += 3)
+      total += solidAngle(light, at((*list)[t]), at((*list)[t + 1]), at((*list)[t + 2]));
+  for (std::size_t t = 0; t + 2 < cap.split.size(); t += 3)
+    total +=
+        solidAngle(light, glm::vec3(cap.split[t]), glm::vec3(cap.split[t + 1]), glm::vec3(cap.split[t + 2]));
+  const int spheres = static_cast<int>(std::lround(total / (4.0 * M_PI)));
+  // The octahedron of the six axis directions around the light, each face wound clockwise seen
+  // from the light (facing away); turned round for spheres facing it.
+  const glm::vec3 axis[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (int k = 0; k < std::abs(spheres); ++k)
+    for (int octant = 0; octant < 8; ++octant) {
+      glm::vec3 corner[3];
+      for (int i = 0; i < 3; ++i) corner[i] = light + ((octant >> i) & 1 ? -1.0f : 1.0f) * axis[i];
+      const bool counterClockwise = solidAngle(light, corner[0], corner[1], corner[2]) > 0.0;
+      if (counterClockwise == (spheres > 0)) std::swap(corner[1], corner[2]);
+      for (const glm::vec3& c : corner) cap.split.emplace_back(c, 0.0f);
+    }
+  return spheres;
 }
 
 bool sphereOutside(const std::vector<Plane>& planes, const glm::vec3& centre, float radius) {

@@ -34,12 +34,23 @@ std::vector<glm::vec4> doubledVertexArray(const Mesh& welded);
 std::vector<std::uint32_t> sideIndices(const Mesh& welded, const std::vector<SilhouetteEdge>& edges,
                                        bool directional);
 
-// The light cap: the faces towards the light, as they are (w = 1 copies).
-std::vector<std::uint32_t> lightCapIndices(const Mesh& welded, const std::vector<bool>& lit);
+// An open mesh blocks the light with both sides of every face: the faces towards the light
+// close one volume, the faces away from it, turned round, another. An edge between the two
+// kinds is then a side of both volumes, walked the same way: its quad counts twice. These are
+// silhouetteEdges with every such interior edge twice (border edges once).
+std::vector<SilhouetteEdge> twoSidedSilhouetteEdges(const EdgeAdjacency& adjacency,
+                                                    const std::vector<bool>& lit);
+
+// The light cap: the faces towards the light, as they are (w = 1 copies). twoSided (an open
+// mesh): the faces away from the light too, turned round.
+std::vector<std::uint32_t> lightCapIndices(const Mesh& welded, const std::vector<bool>& lit,
+                                           bool twoSided = false);
 
 // Everitt and Kilgard's dark cap: the faces away from the light, pushed to infinity (w = 0
-// copies) with their winding, so the cap faces away from the light. O(f) triangles.
-std::vector<std::uint32_t> backFaceDarkCapIndices(const Mesh& welded, const std::vector<bool>& lit);
+// copies) with their winding, so the cap faces away from the light. O(f) triangles. twoSided:
+// the faces towards the light too, pushed to infinity and turned round.
+std::vector<std::uint32_t> backFaceDarkCapIndices(const Mesh& welded, const std::vector<bool>& lit,
+                                                  bool twoSided = false);
 
 // The angle the three directions span: the diameter, in degrees, of the smallest spherical cap
 // that holds them. 180 when no open hemisphere holds them (they are coplanar with the origin and
@@ -64,6 +75,21 @@ struct DarkCap {
 };
 DarkCap fanDarkCap(const Mesh& welded, const std::vector<SilhouetteEdge>& edges, const glm::vec3& light,
                    float splitDegrees = 179.0f);
+
+// The signed solid angle of triangle a, b, c seen from `eye` (Van Oosterom and Strackee):
+// positive when it winds counter-clockwise seen from there, up to 2 pi for a hemisphere.
+double solidAngle(const glm::vec3& eye, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
+
+// A shadow volume never holds its light, so its faces' signed solid angles seen from the light
+// sum to zero. The fan holds to that only while the fan and the caster's faces away from the
+// light do not enclose the light together (a light inside an open container: the shadow takes
+// more than half the sky, the fan covers the opening instead). Then the sum is a whole number of
+// spheres, 4 pi each, and so many spheres at infinity (octahedra of directions around the light,
+// facing away from it) are added to the cap's split triangles. lightCap: indices of the volume's
+// light cap (lightCapIndices). Returns the spheres added (negative: facing the light), 0 for a
+// light outside the caster's convex hull.
+int closeAroundLight(DarkCap& cap, const Mesh& welded, const std::vector<std::uint32_t>& lightCap,
+                     const glm::vec3& light);
 
 // A plane n . p + d >= 0 inside; stored as (n, d).
 using Plane = glm::vec4;

@@ -339,7 +339,8 @@ struct CasterVolume {
   int shadowCase = 0;  // 1, 2 or 3 from the pyramid; 0 culled
   bool zfail = false;
   std::size_t sides = 0, darkCap = 0, lightCap = 0, silhouette = 0;  // index counts, in this order
-  std::size_t splitTriangles = 0, splitVertices = 0;
+  std::size_t splitTriangles = 0, splitVertices = 0;  // split vertices include spheres' octahedra
+  int spheres = 0;                                    // whole spheres added to the fan
 };
 
 class FastRobustShadows final : public Lesson {
@@ -357,7 +358,7 @@ class FastRobustShadows final : public Lesson {
     for (const char* name :
          {"lights_drawn", "lights_offscreen", "casters_culled", "casters_case1", "casters_case2",
           "casters_case3", "casters_zfail", "side_triangles", "dark_cap_triangles", "light_cap_triangles",
-          "split_fan_triangles", "depth_bounds_used", "depth_bounds_skipped"})
+          "split_fan_triangles", "fan_spheres", "depth_bounds_used", "depth_bounds_skipped"})
       f.count(name, 0);
     for (Caster& c : casters_) c.volume = {};
     GLint framework = 0;
@@ -471,12 +472,17 @@ class FastRobustShadows final : public Lesson {
     scene_ = scene;
     fromFile_ = !scene.file.empty();
     drawn_.clear();
+    closed_.clear();
     casters_.clear();
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
       SceneObject& o = scene_.objects[i];
       drawn_.push_back(std::make_unique<GpuMesh>(o.mesh));
-      if (!o.casts) continue;
+      if (!o.casts) {
+        closed_.push_back(prepareCaster(o.mesh).report.closed());
+        continue;
+      }
       if (o.caster.mesh.positions.empty()) o.caster = prepareCaster(o.mesh);
+      closed_.push_back(o.caster.report.closed());
       casters_.push_back(
           {i, boundingSphereOf(o.caster.mesh.positions), std::make_unique<DoubledCaster>(o.caster.mesh), {}});
     }
@@ -561,6 +567,7 @@ class FastRobustShadows final : public Lesson {
       f.count("dark_cap_triangles", v.darkCap / 3 + v.splitVertices / 3);
       f.count("light_cap_triangles", v.lightCap / 3);
       f.count("split_fan_triangles", v.splitTriangles);
+      f.count("fan_spheres", static_cast<std::uint64_t>(v.spheres));
 
       extrude_.set("viewProjection", f.projection * f.view);
       extrude_.set("model", model);
@@ -590,7 +597,10 @@ class FastRobustShadows final : public Lesson {
     const PreparedCaster& prepared = scene_.objects[caster.object].caster;
     const Mesh& mesh = prepared.mesh;
     const std::vector<bool> lit = facesLight(mesh, light);
-    const std::vector<SilhouetteEdge> edges = silhouetteEdges(prepared.adjacency, lit);
+    // An open mesh (a scene file's) blocks light with both sides of its faces: two volumes.
+    const bool twoSided = !prepared.report.closed();
+    const std::vector<SilhouetteEdge> edges = twoSided ? twoSidedSilhouetteEdges(prepared.adjacency, lit)
+                                                       : silhouetteEdges(prepared.adjacency, lit);
     const bool directional = light.w == 0.0f;
     std::vector<std::uint32_t> indices = sideIndices(mesh, edges, directional);
     v.sides = indices.size();
@@ -598,10 +608,12 @@ class FastRobustShadows final : public Lesson {
     if (v.zfail && !directional) {  // a directional light's far ends are one point: no dark cap
       std::vector<std::uint32_t> dark;
       if (fullCaps) {
-        dark = backFaceDarkCapIndices(mesh, lit);
+        dark = backFaceDarkCapIndices(mesh, lit, twoSided);
       } else {
-        const DarkCap fan =
-            fanDarkCap(mesh, edges, glm::vec3(light) / light.w, f.on("split") ? 179.0f : 361.0f);
+        const glm::vec3 point = glm::vec3(light) / light.w;
+        DarkCap fan = fanDarkCap(mesh, edges, point, f.on("split") ? 179.0f : 361.0f);
+        // The fan is a whole sky off when it and the caster enclose the light (CPU work: O(f)).
+        v.spheres = std::abs(closeAroundLight(fan, mesh, lightCapIndices(mesh, lit, twoSided), point));
         dark = fan.indices;
         split = fan.split;
         v.splitTriangles = fan.splitTriangles;
@@ -612,7 +624,7 @@ class FastRobustShadows final : public Lesson {
     }
     const bool lightCap = v.zfail && (fullCaps || (v.shadowCase == 3 && f.on("light-cap")));
     if (lightCap) {
-      const std::vector<std::uint32_t> cap = lightCapIndices(mesh, lit);
+      const std::vector<std::uint32_t> cap = lightCapIndices(mesh, lit, twoSided);
       indices.insert(indices.end(), cap.begin(), cap.end());
       v.lightCap = cap.size();
     }
@@ -635,8 +647,13 @@ class FastRobustShadows final : public Lesson {
       const SceneObject& o = scene_.objects[i];
       light_.set("model", o.modelAt(f.time));
       light_.set("colour", o.color);
+      if (closed_[i])
+        glEnable(GL_CULL_FACE);  // a closed object's back faces are hidden anyway
+      else
+        glDisable(GL_CULL_FACE);  // an open surface is seen, and blocks light, from both sides
       drawn_[i]->draw();
     }
+    glEnable(GL_CULL_FACE);
   }
 
   void drawOverlay(const Frame& f) {
@@ -686,6 +703,7 @@ class FastRobustShadows final : public Lesson {
   bool fromFile_ = false;
   int sceneKey_ = -1;
   std::vector<std::unique_ptr<GpuMesh>> drawn_;
+  std::vector<bool> closed_;  // per object: a closed mesh, drawn with back faces culled
   std::vector<Caster> casters_;
   std::unique_ptr<AccumulationTarget> target_;
   GLuint framework_ = 0;

@@ -103,6 +103,38 @@ TEST(FastVolume, SidesAndCapsAreClosed) {
     }
 }
 
+// An open box (a cube without its top) and a single square: with both sides of every face
+// closing a volume, sides and caps close, for either dark cap.
+TEST(FastVolume, OpenMeshesCloseFromBothSides) {
+  const Mesh cube = weldByPosition(makeCube(1.0f)).mesh;
+  Mesh tray = cube;
+  tray.indices.clear();
+  for (std::size_t t = 0; t < cube.triangleCount(); ++t) {
+    bool top = true;
+    for (int k = 0; k < 3; ++k) top &= cube.positions[cube.indices[3 * t + k]].y > 0.5f;
+    if (!top)
+      tray.indices.insert(tray.indices.end(), cube.indices.begin() + 3 * t, cube.indices.begin() + 3 * t + 3);
+  }
+  const Mesh square = weldByPosition(makePlane(1.0f, 2)).mesh;
+  const Mesh* meshes[] = {&tray, &square};
+  for (const Mesh* m : meshes) {
+    const EdgeAdjacency adjacency = buildEdgeAdjacency(m->indices, m->positions.size());
+    ASSERT_GT(adjacency.report.borderEdges, 0u);
+    for (const glm::vec3& l :
+         {glm::vec3(0.3f, 4.0f, 0.2f), glm::vec3(-3.0f, 0.5f, 2.0f), glm::vec3(0.2f, -3.0f, 0.1f)}) {
+      const std::vector<bool> lit = facesLight(*m, glm::vec4(l, 1.0f));
+      const auto edges = twoSidedSilhouetteEdges(adjacency, lit);
+      const auto sides = sideIndices(*m, edges, false);
+      const auto lightCap = lightCapIndices(*m, lit, true);
+      EXPECT_TRUE(closedSurface(concat(concat(sides, lightCap), backFaceDarkCapIndices(*m, lit, true))));
+      const DarkCap fan = fanDarkCap(*m, edges, l);
+      ASSERT_TRUE(fan.split.empty());
+      EXPECT_TRUE(closedSurface(concat(concat(sides, lightCap), fan.indices)));
+      EXPECT_EQ(lightCap.size(), m->indices.size());  // every face, one way or the other
+    }
+  }
+}
+
 // The fan costs one triangle per silhouette edge not touching its apex: O(s), against the
 // back-face cap's O(f).
 TEST(FanDarkCap, OneTrianglePerSilhouetteEdgeBesidesTheApexEdges) {
@@ -128,14 +160,6 @@ TEST(SpanDegrees, KnownConfigurations) {
   EXPECT_NEAR(spanDegrees({1, 0, 0}, {0, 0, 0}, {0, 1, 0}), 180.0, 1e-3);  // no direction
 }
 
-// Van Oosterom and Strackee: the signed solid angle of the triangle of directions a, b, c.
-double solidAngle(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
-  const double la = glm::length(a), lb = glm::length(b), lc = glm::length(c);
-  const double num = glm::dot(a, glm::cross(b, c));
-  const double den = la * lb * lc + glm::dot(a, b) * lc + glm::dot(a, c) * lb + glm::dot(b, c) * la;
-  return 2.0 * std::atan2(num, den);
-}
-
 // A square's outline with the light just above it, over the inside of one fan triangle: that
 // triangle spans almost 180 degrees and is split in three through the light's foot; the pieces
 // span less and cover the same signed solid angle.
@@ -148,19 +172,59 @@ TEST(FanDarkCap, SplitsTrianglesSpanningHalfTheSky) {
   ASSERT_EQ(cap.splitTriangles, 1u);
   ASSERT_EQ(cap.split.size(), 9u);
   ASSERT_EQ(cap.indices.size(), 3u);  // the other one, 0 3 2, spans about 152 degrees
-  const glm::dvec3 l(light);
-  const auto dir = [&](const glm::vec4& v) { return glm::dvec3(glm::vec3(v)) - l; };
+  const auto direction = [&](const glm::vec4& v) { return glm::vec3(v) - light; };
   double pieces = 0.0;
   for (std::size_t t = 0; t < 9; t += 3) {
-    EXPECT_LT(spanDegrees(glm::vec3(dir(cap.split[t])), glm::vec3(dir(cap.split[t + 1])),
-                          glm::vec3(dir(cap.split[t + 2]))),
+    EXPECT_LT(spanDegrees(direction(cap.split[t]), direction(cap.split[t + 1]), direction(cap.split[t + 2])),
               170.0f);
-    pieces += solidAngle(dir(cap.split[t]), dir(cap.split[t + 1]), dir(cap.split[t + 2]));
+    pieces +=
+        solidAngle(light, glm::vec3(cap.split[t]), glm::vec3(cap.split[t + 1]), glm::vec3(cap.split[t + 2]));
   }
-  const glm::dvec3 p0(square.positions[0]), p1(square.positions[1]), p2(square.positions[2]);
-  const double whole = solidAngle(p0 - l, p2 - l, p1 - l);  // the fan's c, b, a
+  const double whole =
+      solidAngle(light, square.positions[0], square.positions[2], square.positions[1]);  // c, b, a
   EXPECT_NEAR(pieces, whole, 1e-6);
   EXPECT_GT(std::abs(whole), 0.9 * 2.0 * M_PI);  // almost a hemisphere
+}
+
+// A light inside an open box: the shadow is everything but the opening, more than half the sky.
+// The fan over the rim covers the opening instead, a whole sphere off; closeAroundLight adds
+// the sphere back, and the volume's faces then subtend no solid angle at the light, as a volume
+// that does not hold its light must.
+TEST(FanDarkCap, ALightInsideAnOpenBoxGetsItsSphereBack) {
+  const Mesh cube = weldByPosition(makeCube(1.0f)).mesh;
+  Mesh tray = cube;
+  tray.indices.clear();
+  for (std::size_t t = 0; t < cube.triangleCount(); ++t) {
+    bool top = true;
+    for (int k = 0; k < 3; ++k) top &= cube.positions[cube.indices[3 * t + k]].y > 0.5f;
+    if (!top)
+      tray.indices.insert(tray.indices.end(), cube.indices.begin() + 3 * t, cube.indices.begin() + 3 * t + 3);
+  }
+  const EdgeAdjacency adjacency = buildEdgeAdjacency(tray.indices, tray.positions.size());
+  const auto n = static_cast<std::uint32_t>(tray.positions.size());
+  const auto total = [&](const glm::vec3& light, const std::vector<std::uint32_t>& lightCap,
+                         const DarkCap& cap) {
+    double sum = 0.0;
+    const auto at = [&](std::uint32_t i) { return tray.positions[i < n ? i : i - n]; };
+    const std::vector<std::uint32_t>* lists[] = {&lightCap, &cap.indices};
+    for (const auto* list : lists)
+      for (std::size_t t = 0; t < list->size(); t += 3)
+        sum += solidAngle(light, at((*list)[t]), at((*list)[t + 1]), at((*list)[t + 2]));
+    for (std::size_t t = 0; t < cap.split.size(); t += 3)
+      sum += solidAngle(light, glm::vec3(cap.split[t]), glm::vec3(cap.split[t + 1]),
+                        glm::vec3(cap.split[t + 2]));
+    return sum;
+  };
+  for (const glm::vec3& light : {glm::vec3(0, 0, 0), glm::vec3(0.0f, 3.0f, 0.0f)}) {
+    const std::vector<bool> lit = facesLight(tray, glm::vec4(light, 1.0f));
+    const auto edges = twoSidedSilhouetteEdges(adjacency, lit);
+    const auto lightCap = lightCapIndices(tray, lit, true);
+    DarkCap fan = fanDarkCap(tray, edges, light);
+    const int spheres = closeAroundLight(fan, tray, lightCap, light);
+    EXPECT_EQ(spheres != 0, light.y == 0.0f);  // inside: a sphere off; above the opening: none
+    EXPECT_EQ(fan.split.size(), 24u * static_cast<std::size_t>(std::abs(spheres)));
+    EXPECT_NEAR(total(light, lightCap, fan), 0.0, 1e-6);
+  }
 }
 
 // A camera at the origin looking down -z.
