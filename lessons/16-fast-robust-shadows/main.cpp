@@ -14,8 +14,11 @@
 //     z-fail with the sides and the dark cap (a fan over the silhouette at infinity), plus the
 //     light cap (the caster's lit faces) only when the caster may be on screen (case 3, not 2);
 //   - each point light has finite bounds: casters that miss them are culled, and the light's
-//     shadow and illumination passes are scissored to their rectangle on screen (and depth
-//     bounded, where the driver has EXT_depth_bounds_test);
+//     shadow and illumination passes are scissored to their rectangle on screen, and its
+//     volumes depth-bounded where the driver has EXT_depth_bounds_test;
+//   - scene files may bring open meshes, whose faces block light from both sides (a volume from
+//     each side), and lights inside a caster's hull, where the fan comes out a whole sphere off
+//     and gets it back (closeAroundLight);
 //   - the rendering system of its section 8: an ambient pass fills the depth buffer, then per
 //     light, the stencil cleared, its shadow volumes counted, and the light added with stencil
 //     EQUAL 0 and additive blending, into a float target so many lights do not band.
@@ -31,7 +34,6 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
-#include <map>
 #include <memory>
 #include <string>
 
