@@ -10,6 +10,10 @@ namespace stencil {
 
 namespace {
 
+// |cos| of the light's incidence below which a surface is edge-on to the light: the light
+// arrives at zero incidence, so lit and shadowed look the same and neither is claimed.
+constexpr float kEdgeOn = 1e-5f;
+
 // The camera ray through a pixel centre: the centre unprojected at the near and far planes,
 // t in [0, tMax = 1] spanning the view frustum. With the far plane at infinity the far point is
 // a direction (w = 0): the ray then goes through the centre unprojected half way in depth
@@ -105,7 +109,11 @@ std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objects,
       // Start the shadow ray a hair off the surface, on the side the camera sees, so the
       // receiver does not shadow itself through rounding.
       const glm::vec3 point = ray.origin + hit->t * ray.direction;
-      if (light.w != 0.0f && glm::distance(point, glm::vec3(light) / light.w) > lightRadius) {
+      const glm::vec3 toLight = light.w == 0.0f ? glm::normalize(glm::vec3(light))
+                                                : glm::normalize(glm::vec3(light) / light.w - point);
+      const bool beyondRadius =
+          light.w != 0.0f && glm::distance(point, glm::vec3(light) / light.w) > lightRadius;
+      if (beyondRadius || std::abs(glm::dot(hit->normal, toLight)) < kEdgeOn) {
         c = PixelClass::OutOfReach;
         continue;
       }

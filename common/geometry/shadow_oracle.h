@@ -18,8 +18,9 @@ enum class PixelClass : std::uint8_t {
   Other,     // it meets an object that receives no shadow (a planar caster, say)
   Lit,       // it meets a receiver, and the way to the light is free
   Shadowed,  // it meets a receiver, and a caster blocks the way to the light
-  // It meets a receiver beyond a bounded point light's radius: no light reaches it, so neither
-  // lit nor shadowed is claimed (a method may skip shadows there).
+  // It meets a receiver the light does not reach: beyond a bounded point light's radius (a
+  // method may skip shadows there), or on a surface edge-on to the light (the light arrives at
+  // zero incidence). Neither lit nor shadowed is claimed.
   OutOfReach,
 };
 

@@ -94,15 +94,16 @@ TEST(Oracle, NothingIsClaimedBeyondAPointLightsRadius) {
                                           {&box, glm::translate(glm::mat4(1), {0, 1, 0}), true, true}};
   const glm::mat4 viewProjection = glm::perspective(0.9f, 4.0f / 3.0f, 0.5f, 100.0f) *
                                    glm::lookAt(glm::vec3(6, 6, 8), glm::vec3(0), glm::vec3(0, 1, 0));
-  const glm::vec4 light(0.5f, 3.0f, 0.5f, 1.0f);
+  const glm::vec4 light(0.3f, 3.0f, 0.2f, 1.0f);
   const glm::ivec2 size(64, 48);
   const auto unbounded = classifyPixels(objects, light, viewProjection, size);
   const auto bounded = classifyPixels(objects, light, viewProjection, size, 4.0f);
   std::size_t outOfReach = 0;
   for (std::size_t i = 0; i < bounded.size(); ++i) {
     if (bounded[i] == PixelClass::OutOfReach) {
-      ++outOfReach;
-      EXPECT_TRUE(unbounded[i] == PixelClass::Lit || unbounded[i] == PixelClass::Shadowed);
+      outOfReach += unbounded[i] != PixelClass::OutOfReach;
+      EXPECT_NE(unbounded[i], PixelClass::Empty);
+      EXPECT_NE(unbounded[i], PixelClass::Other);
     } else {
       EXPECT_EQ(bounded[i], unbounded[i]);
     }
@@ -110,8 +111,28 @@ TEST(Oracle, NothingIsClaimedBeyondAPointLightsRadius) {
   EXPECT_GT(outOfReach, 0u);
   EXPECT_GT(std::count(bounded.begin(), bounded.end(), PixelClass::Lit), 0);
   // A directional light has no bounds: the radius is ignored.
-  EXPECT_EQ(classifyPixels(objects, glm::vec4(0, 1, 0, 0), viewProjection, size, 4.0f),
-            classifyPixels(objects, glm::vec4(0, 1, 0, 0), viewProjection, size));
+  EXPECT_EQ(classifyPixels(objects, glm::vec4(0.1f, 1, 0.2f, 0), viewProjection, size, 4.0f),
+            classifyPixels(objects, glm::vec4(0.1f, 1, 0.2f, 0), viewProjection, size));
+}
+
+// A face edge-on to the light gets no light at all, lit or shadowed: no claim is made there.
+TEST(Oracle, NothingIsClaimedOnAFaceEdgeOnToTheLight) {
+  const Mesh box = makeCube(0.5f);
+  const Mesh ground = makePlane(6.0f, 1);
+  const std::vector<OracleObject> objects{{&ground, glm::mat4(1), false, true},
+                                          {&box, glm::translate(glm::mat4(1), {0, 0.5f, 0}), true, true}};
+  // Looking at the box's +z face (z = 0.5) head on.
+  const glm::mat4 viewProjection =
+      glm::perspective(0.6f, 1.0f, 0.5f, 100.0f) *
+      glm::lookAt(glm::vec3(0, 0.5f, 5), glm::vec3(0, 0.5f, 0), glm::vec3(0, 1, 0));
+  const glm::ivec2 size(32, 32);
+  const auto centre = [&](const glm::vec4& light) {
+    return classifyPixels(objects, light, viewProjection, size)[16 * 32 + 16];
+  };
+  EXPECT_EQ(centre({0.8f, 3.0f, 0.5f, 1.0f}), PixelClass::OutOfReach) << "the light in the face's plane";
+  EXPECT_EQ(centre({0.8f, 3.0f, 0.6f, 1.0f}), PixelClass::Lit);
+  EXPECT_EQ(centre({0.8f, 3.0f, 0.4f, 1.0f}), PixelClass::Shadowed) << "behind the face: the box blocks it";
+  EXPECT_EQ(centre({1.0f, 0.0f, 0.0f, 0.0f}), PixelClass::OutOfReach) << "a directional light along the face";
 }
 
 }  // namespace

@@ -5,10 +5,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
+#include <iterator>
 #include <regex>
 #include <string>
 
+#include "geometry/raycast.h"
 #include "geometry/scene.h"
 #include "geometry/shadow_volume.h"
 
@@ -122,6 +125,21 @@ TEST(SceneFile, AGoodFile) {
     if (o.casts) {
       EXPECT_TRUE(o.caster.report.closed()) << o.name;
     }
+}
+
+// The example at the top of docs/scenes.md reads (its OBJ model replaced by one that exists).
+TEST(SceneFile, TheDocumentedExampleReads) {
+  std::ifstream in(std::filesystem::path(DOCS_DIR) / "scenes.md");
+  const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto begin = doc.find("```\n"), end = doc.find("```", begin + 4);
+  ASSERT_NE(end, std::string::npos);
+  std::string example = doc.substr(begin + 4, end - begin - 4);
+  const std::string model = "models/bunny.obj";
+  ASSERT_NE(example.find(model), std::string::npos);
+  example.replace(example.find(model), model.size(), "meshes/split-cube.obj");
+  const Scene s = parseScene(example, scenes / "example.scene");
+  EXPECT_EQ(s.lights.size(), 2u);
+  EXPECT_EQ(s.objects.size(), 3u);
 }
 
 TEST(SceneFile, ParametersHaveDefaultsAndTheOrthographicMirroredCamera) {
@@ -306,6 +324,34 @@ TEST(SceneFileObj, DegenerateTrianglesInsideAClosedMeshAreDropped) {
   EXPECT_EQ(m.caster.mesh.triangleCount(), 12u);
   EXPECT_TRUE(m.caster.report.closed());
   EXPECT_TRUE(mentions(m.caster.report, "dropped 2 degenerate triangles"));
+}
+
+// The staircase's claim, counted: the winding of a caster's shadow volume at a point is the
+// number of times the way to the light enters the caster (crosses a face that faces the light).
+// On the strip in front of the stairs that is 256, one more than 8 bits count; a little further
+// up the slope the ray stays inside the flight and enters it once.
+TEST(SceneFile, TheStaircaseNests256VolumesOnItsStrip) {
+  const Scene s = loadScene(scenes / "hard" / "staircase-256-nested-volumes.scene");
+  const SceneObject& stairs = s.objects[1];
+  ASSERT_EQ(stairs.name, "stairs");
+  const glm::vec4 light = s.lights[0].position;
+  const Mesh world = transformed(stairs.caster.mesh, stairs.model);
+  const std::vector<bool> lit = facesLight(world, light);
+  const auto entries = [&](float x) {
+    const Ray ray{{x, 0.0f, 0.37f}, glm::vec3(light)};  // off the treads' diagonals, which count twice
+    int n = 0;
+    for (std::size_t t = 0; t < world.triangleCount(); ++t) {
+      const std::uint32_t* i = &world.indices[3 * t];
+      if (lit[t] &&
+          intersectTriangle(ray, world.positions[i[0]], world.positions[i[1]], world.positions[i[2]]))
+        ++n;
+    }
+    return n;
+  };
+  EXPECT_EQ(entries(-14.05f), 256);
+  EXPECT_EQ(entries(-14.02f), 256);
+  EXPECT_EQ(entries(-13.9f), 1);
+  EXPECT_EQ(entries(-14.3f), 0) << "in front of the shadow";
 }
 
 // Every hard case is a file that reads: a broken one fails here, not in a lesson's test.
