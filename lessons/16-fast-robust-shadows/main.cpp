@@ -110,6 +110,10 @@ LessonInfo lessonInfo() {
       {"bounds", 'B', "cull casters and scissor by the light's bounds", 1},
       {"moving", 'V', "the moving casters (a torus and a cube above the grid)", 1},
       {"show", 'X', "overlay: casters coloured by case, their volumes and silhouettes", 0},
+      {"fill", 'I',
+       "measure: each light's volumes drawn again without the depth test, in a pass of their own\n"
+       "      (volume-fill), whose fragments are every fragment the volumes rasterize",
+       0},
       {"shadow", 'H', "shadows at all (off: every light reaches everything)", 1},
   };
   info.camera.target = {-0.2f, 0.6f, 0.0f};
@@ -158,7 +162,7 @@ LessonInfo lessonInfo() {
        "the same accumulated in RGBA8: each light rounded, bands",
        {{"many", 1}, {"float", 0}}},
   };
-  info.passes = {"ambient", "shadows", "illumination", "overlay"};
+  info.passes = {"ambient", "shadows", "volume-fill", "illumination", "overlay"};
   return info;
 }
 
@@ -416,7 +420,11 @@ class FastRobustShadows final : public Lesson {
       if (depthBounds) glDisable(GL_DEPTH_BOUNDS_TEST_EXT);
       endPass(f, "shadows");
       f.shadowMask("light-" + std::to_string(order[k]));
-      target_->bind();  // reading the mask may have bound another framebuffer
+      target_->bind();                       // reading the mask may have bound another framebuffer
+      if (f.on("fill") && f.on("shadow")) {  // the fill the stencil test saw, for --stats
+        drawVolumeFill();
+        endPass(f, "volume-fill");
+      }
 
       glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);  // the light's colour is added
       glDepthMask(GL_FALSE);                            // onto the surfaces already there
@@ -522,6 +530,8 @@ class FastRobustShadows final : public Lesson {
                    const std::array<glm::vec3, 4>& nearRect, const std::vector<Plane>& frustum,
                    bool checked) {
     const int method = f.option("method");
+    fillTime_ = f.time;
+    fillLight_ = light.position;
     const std::vector<Plane> pyramid = occlusionPyramid(nearRect, light.position);
     // Everything that decides each caster's volume first (Lengyel's choice needs all of them).
     struct Choice {
@@ -546,6 +556,7 @@ class FastRobustShadows final : public Lesson {
     glDisable(GL_CULL_FACE);                              // both faces in one draw, two-sided stencil
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_ALWAYS, 0, 0xFF);  // every volume fragment counts
+    lightVolumes_.clear();
     for (std::size_t c = 0; c < casters_.size(); ++c) {
       Caster& caster = casters_[c];
       const SceneObject& o = scene_.objects[caster.object];
@@ -588,9 +599,28 @@ class FastRobustShadows final : public Lesson {
         glDepthFunc(GL_LESS);
       }
       if (checked) caster.volume = v;
+      lightVolumes_.push_back({c, v});
     }
     glDisable(GL_STENCIL_TEST);
     glEnable(GL_CULL_FACE);  // the scene's own culling again
+  }
+
+  // The light's volumes once more, every fragment passing: nothing written, only counted by the
+  // pass's occlusion query. The same geometry and scissor as the shadows pass.
+  void drawVolumeFill() {
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_DEPTH_TEST);  // in front of the scene or behind, every fragment is fill
+    glDisable(GL_CULL_FACE);
+    for (const auto& [c, v] : lightVolumes_) {
+      const SceneObject& o = scene_.objects[casters_[c].object];
+      extrude_.set("model", o.modelAt(fillTime_));
+      extrude_.set("light", glm::inverse(o.modelAt(fillTime_)) * fillLight_);
+      casters_[c].gpu->draw(0, v.sides + v.darkCap + v.lightCap);
+      casters_[c].gpu->drawSplit();
+    }
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_CULL_FACE);
   }
 
   // The indices of one caster's volume for a light in its own space: sides, dark cap and light
@@ -707,6 +737,9 @@ class FastRobustShadows final : public Lesson {
   std::vector<std::unique_ptr<GpuMesh>> drawn_;
   std::vector<bool> closed_;  // per object: a closed mesh, drawn with back faces culled
   std::vector<Caster> casters_;
+  std::vector<std::pair<std::size_t, CasterVolume>> lightVolumes_;  // the current light's, by caster
+  double fillTime_ = 0.0;                                           // and what drawVolumeFill needs
+  glm::vec4 fillLight_{0.0f};
   std::unique_ptr<AccumulationTarget> target_;
   GLuint framework_ = 0;
 };

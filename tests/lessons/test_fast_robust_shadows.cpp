@@ -78,6 +78,27 @@ TEST(FastRobustShadows, FanTrianglesUnderALightInTheirPlaneAreSplit) {
   EXPECT_EQ(verdictsDiffering(split->stencil, whole->stencil), 0u);
 }
 
+// The fill pass measures and changes nothing; Everitt and Kilgard's caps rasterize more than the
+// paper's per-case volumes from the same camera.
+TEST(FastRobustShadows, TheFillPassCountsEveryVolumeFragmentAndChangesNothing) {
+  const auto plain = run("plain", "--variant looking-up", true);
+  if (!plain) GTEST_SKIP() << "no GL context";
+  const auto measured = run("measured", "--variant looking-up --set fill=1", true);
+  EXPECT_EQ(plain->stencil.pixels, measured->stencil.pixels);
+  EXPECT_EQ(plain->colour.pixels, measured->colour.pixels);
+  EXPECT_EQ(passTriangles(measured->stats, "volume-fill"), passTriangles(measured->stats, "shadows"));
+  const auto fill = [](const std::string& stats) {
+    long long total = 0;
+    const std::string key = "{\"name\": \"volume-fill\"";
+    for (auto at = stats.find(key); at != std::string::npos; at = stats.find(key, at + 1))
+      total += std::stoll(stats.substr(stats.find("\"samples_passed\": ", at) + 18));
+    return total;
+  };
+  const auto everittKilgard = run("ek", "--variant looking-up --set fill=1 --set method=1", true);
+  EXPECT_GT(fill(measured->stats), 0);
+  EXPECT_GT(fill(everittKilgard->stats), fill(measured->stats));
+}
+
 struct SphereCost {
   long long shadowCase, sides, darkCap, lightCap;
 };

@@ -5,8 +5,9 @@
 // z-fail for all) and z-pass alone, on the same scene along the same camera path: three views
 // (outside every shadow; the eye in the sphere's shadow looking away; looking up past the sphere)
 // at three moments of the moving casters. Per run: triangles submitted in the shadow passes,
-// volume fragments in front of the scene (samples passed in the shadow passes), the fastest frame
-// and the pixels that disagree with the ray cast off its edges.
+// volume fragments in front of the scene (samples passed in the shadow passes), every fragment
+// the volumes rasterize (the lesson's fill pass), the fastest frame and the pixels that disagree
+// with the ray cast off its edges.
 //
 // Tessellation: the sphere's volume triangles (sides, dark cap, light cap) as its slices grow,
 // in each of its three cases, for McGuire et al. and Lengyel: the paper's O(s), O(s), O(f)
@@ -44,7 +45,7 @@ struct Row {
   double time = 0;
   int slices = 0;
   double frameMsMin = 0;
-  long long shadowTriangles = 0, volumeFragments = 0, wrongOffEdges = 0;
+  long long shadowTriangles = 0, volumeFragments = 0, rasterized = 0, wrongOffEdges = 0;
   long long sphereSides = 0, sphereDarkCap = 0, sphereLightCap = 0, sphereCase = 0;
   long long sphere() const { return sphereSides + sphereDarkCap + sphereLightCap; }
 };
@@ -91,14 +92,20 @@ void measureMethod(const fs::path& work, int frames, Row& row) {
   const fs::path log = work / "oracle.log", stats = work / "stats.json";
   run(settings(row) + " --oracle " + (work / "oracle.png").string() + " 2> " + log.string(), true);
   row.wrongOffEdges = wrongOffEdges(log);
-  run(settings(row) + " --stats --frames " + std::to_string(frames) + " > " + stats.string());
+  // The counts from one frame at the row's time, with the fill pass; the time from frames
+  // without it (they run on past the row's time, 1/60 s apart).
+  run(settings(row) + " --set fill=1 --stats > " + stats.string());
   const std::string json = readAll(stats);
-  row.frameMsMin = jsonNumber(json, "\"frame_ms\"", "min");
   row.shadowTriangles = passSum(json, "shadows", "triangles");
   row.volumeFragments = passSum(json, "shadows", "samples_passed");
-  std::fprintf(stderr, "sweep: %-15s %-13s t %.2f  %8.3f ms  %6lld triangles  %8lld fragments  %lld wrong\n",
-               row.method.c_str(), row.view.c_str(), row.time, row.frameMsMin, row.shadowTriangles,
-               row.volumeFragments, row.wrongOffEdges);
+  row.rasterized = passSum(json, "volume-fill", "samples_passed");
+  run(settings(row) + " --stats --frames " + std::to_string(frames) + " > " + stats.string());
+  row.frameMsMin = jsonNumber(readAll(stats), "\"frame_ms\"", "min");
+  std::fprintf(
+      stderr,
+      "sweep: %-15s %-13s t %.2f  %8.3f ms  %6lld triangles  %8lld fragments, %8lld rasterized  %lld wrong\n",
+      row.method.c_str(), row.view.c_str(), row.time, row.frameMsMin, row.shadowTriangles,
+      row.volumeFragments, row.rasterized, row.wrongOffEdges);
 }
 
 void measureSphere(const fs::path& work, Row& row) {
@@ -173,18 +180,19 @@ int main(int argc, char** argv) {
       }
 
   std::ofstream csv(out.string() + ".csv");
-  csv << "sweep,method,view,time,slices,frame_ms_min,shadow_triangles,volume_fragments,wrong_off_edges,"
-         "sphere_case,sphere_sides,sphere_dark_cap,sphere_light_cap\n";
+  csv << "sweep,method,view,time,slices,frame_ms_min,shadow_triangles,volume_fragments,volume_fragments_"
+         "rasterized,"
+         "wrong_off_edges,sphere_case,sphere_sides,sphere_dark_cap,sphere_light_cap\n";
   for (const Row& r : rows)
     csv << r.sweep << "," << r.method << "," << r.view << "," << r.time << "," << r.slices << ","
-        << r.frameMsMin << "," << r.shadowTriangles << "," << r.volumeFragments << "," << r.wrongOffEdges
-        << "," << r.sphereCase << "," << r.sphereSides << "," << r.sphereDarkCap << "," << r.sphereLightCap
-        << "\n";
+        << r.frameMsMin << "," << r.shadowTriangles << "," << r.volumeFragments << "," << r.rasterized << ","
+        << r.wrongOffEdges << "," << r.sphereCase << "," << r.sphereSides << "," << r.sphereDarkCap << ","
+        << r.sphereLightCap << "\n";
 
   // Per view, the methods' fastest frame and triangles (averaged over the moments), and the
   // sphere's triangles per case at the most slices.
-  std::vector<std::vector<double>> ms(kViews.size(), std::vector<double>(kMethods.size())), tris = ms,
-                                                                                            wrong = ms;
+  std::vector<std::vector<double>> ms(kViews.size(), std::vector<double>(kMethods.size()));
+  auto tris = ms, wrong = ms, fill = ms;
   for (const Row& r : rows) {
     if (r.sweep != "methods") continue;
     const auto v = static_cast<std::size_t>(std::find(kViews.begin(), kViews.end(), r.view) - kViews.begin());
@@ -193,6 +201,7 @@ int main(int argc, char** argv) {
     ms[v][m] += r.frameMsMin / static_cast<double>(times.size());
     tris[v][m] += static_cast<double>(r.shadowTriangles) / static_cast<double>(times.size());
     wrong[v][m] += static_cast<double>(r.wrongOffEdges) / static_cast<double>(times.size());
+    fill[v][m] += static_cast<double>(r.rasterized) / static_cast<double>(times.size());
   }
   std::vector<std::vector<double>> sphere(kViews.size(), std::vector<double>(2));
   for (const Row& r : rows)
@@ -202,13 +211,14 @@ int main(int argc, char** argv) {
       sphere[v][r.method == "mcguire" ? 0 : 1] = static_cast<double>(r.sphere());
     }
   std::ofstream svg(out.string() + ".svg");
-  svg << "<svg xmlns='http://www.w3.org/2000/svg' width='1200' height='330' font-family='sans-serif' "
+  svg << "<svg xmlns='http://www.w3.org/2000/svg' width='920' height='660' font-family='sans-serif' "
          "font-size='11'>\n<rect width='100%' height='100%' fill='white'/>\n";
   writeBars(svg, "fastest frame (ms, " + kSize + ")", kViews, kMethods, ms, 50, 40, 250, 240);
-  writeBars(svg, "shadow-pass triangles", kViews, kMethods, tris, 340, 40, 250, 240);
-  writeBars(svg, "pixels wrong off the ray cast's edges", kViews, kMethods, wrong, 630, 40, 250, 240);
+  writeBars(svg, "shadow-pass triangles", kViews, kMethods, tris, 350, 40, 250, 240);
+  writeBars(svg, "volume fragments rasterized", kViews, kMethods, fill, 650, 40, 250, 240);
+  writeBars(svg, "pixels wrong off the ray cast's edges", kViews, kMethods, wrong, 50, 370, 250, 240);
   writeBars(svg, "sphere volume triangles, " + std::to_string(slices.back()) + " slices (case 1, 2, 3)",
-            kViews, {"mcguire", "lengyel"}, sphere, 920, 40, 250, 240);
+            kViews, {"mcguire", "lengyel"}, sphere, 350, 370, 250, 240);
   svg << "</svg>\n";
   fs::remove_all(work);
   std::cerr << "sweep: wrote " << out.string() << ".csv and .svg\n";
