@@ -106,9 +106,9 @@ LessonInfo lessonInfo() {
       {"float", 'F', "accumulate light in an RGBA16F target (off: RGBA8, which bands)", 1},
       {"slices", 'Y', "the sphere's slices, at least 4 (stacks: half as many)", 24, 256},
       {"light-cap", 'C', "draw the light cap of case-3 casters", 1},
-      {"split", 'P', "split dark-cap fan triangles that span 180 degrees or more", 1},
+      {"split", 'G', "split dark-cap fan triangles that span 180 degrees or more", 1},
       {"bounds", 'B', "cull casters and scissor by the light's bounds", 1},
-      {"moving", 'V', "the moving casters (a torus and a cube above the grid)", 1},
+      {"moving", 'O', "the moving casters (a torus and a cube above the grid)", 1},
       {"show", 'X', "overlay: casters coloured by case, their volumes and silhouettes", 0},
       {"fill", 'I',
        "measure: each light's volumes drawn again without the depth test, in a pass of their own\n"
