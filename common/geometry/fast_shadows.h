@@ -1,0 +1,149 @@
+// The data structures and procedures of McGuire, Hughes, Egan, Kilgard and Everitt, "Fast,
+// Practical and Robust Shadows" (2003), GL-free:
+//   - the doubled vertex array: each caster vertex once with w = 1 and once with w = 0, so a
+//     vertex shader extrudes the w = 0 copy and every volume triangle costs indices only;
+//   - the possible silhouette as side quads (or, for a directional light, triangles converging
+//     on the one point at infinity) indexing that array, directed so they face out;
+//   - the occlusion pyramid (the light and the camera's near rectangle) that decides per caster
+//     whether z-pass suffices (case 1), or z-fail is needed without (case 2) or with (case 3)
+//     the light cap;
+//   - the dark cap as a fan over the silhouette edges at infinity, with its triangles that span
+//     180 degrees or more split;
+//   - the light's bounds: casters culled against them, and a scissor rectangle.
+// Lights are homogeneous as everywhere: w = 1 a point, w = 0 the direction towards the light.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "geometry/bounds.h"
+#include "geometry/mesh.h"
+#include "geometry/shadow_volume.h"
+
+namespace stencil {
+
+// Index i is (p_i, 1), the vertex itself; index n + i is (p_i, 0), its copy that the vertex
+// shader pushes to infinity away from the light (n = mesh.positions.size()).
+std::vector<glm::vec4> doubledVertexArray(const Mesh& welded);
+
+// The sides: each silhouette edge v0 -> v1 (as silhouetteEdges directs it) extruded into two
+// triangles facing out of the volume, split as extrudedQuadCorners splits them so shared edges
+// cancel. For a directional light the two far copies are the same point at infinity, so each
+// edge is one triangle (v1, v0, far v0). Indices into doubledVertexArray of the same mesh.
+std::vector<std::uint32_t> sideIndices(const Mesh& welded, const std::vector<SilhouetteEdge>& edges,
+                                       bool directional);
+
+// An open mesh blocks the light with both sides of every face: the faces towards the light
+// close one volume, the faces away from it, turned round, another. An edge between the two
+// kinds is then a side of both volumes, walked the same way: its quad counts twice. These are
+// silhouetteEdges with every such interior edge twice (border edges once).
+std::vector<SilhouetteEdge> twoSidedSilhouetteEdges(const EdgeAdjacency& adjacency,
+                                                    const std::vector<bool>& lit);
+
+// The light cap: the faces towards the light, as they are (w = 1 copies). twoSided (an open
+// mesh): the faces away from the light too, turned round.
+std::vector<std::uint32_t> lightCapIndices(const Mesh& welded, const std::vector<bool>& lit,
+                                           bool twoSided = false);
+
+// Everitt and Kilgard's dark cap: the faces away from the light, pushed to infinity (w = 0
+// copies) with their winding, so the cap faces away from the light. O(f) triangles. twoSided:
+// the faces towards the light too, pushed to infinity and turned round.
+std::vector<std::uint32_t> backFaceDarkCapIndices(const Mesh& welded, const std::vector<bool>& lit,
+                                                  bool twoSided = false);
+
+// The angle the three directions span: the diameter, in degrees, of the smallest spherical cap
+// that holds them. 180 when no open hemisphere holds them (they are coplanar with the origin and
+// surround it) or when one of them is zero.
+float spanDegrees(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
+
+// McGuire's dark cap for a point light, O(s) triangles: the silhouette at infinity closed by a
+// fan from the far copy of one silhouette vertex to the far copies of every edge not touching it,
+// wound to face away from the light. The fan's triangles overlap with both windings, but for
+// every eye ray their signed count is the silhouette's winding number, which is what a counting
+// stencil sees. The rasterizer draws a triangle at infinity as the cone of its three directions,
+// the short way round; a triangle whose directions span 180 degrees or more (the light near its
+// plane, over its inside) has no short way, so it is split into three through the foot of the
+// light on its plane, each drawn from the triangle's own directions.
+struct DarkCap {
+  std::vector<std::uint32_t> indices;  // into doubledVertexArray
+  // The split triangles, three vertices each, in the doubled array's format: (point, 0) for a
+  // far copy. Drawn with the same shader.
+  std::vector<glm::vec4> split;
+  std::size_t splitTriangles = 0;  // fan triangles that spanned 180 degrees or more
+  std::size_t triangleCount() const { return indices.size() / 3 + split.size() / 3; }
+};
+DarkCap fanDarkCap(const Mesh& welded, const std::vector<SilhouetteEdge>& edges, const glm::vec3& light,
+                   float splitDegrees = 179.0f);
+
+// The signed solid angle of triangle a, b, c seen from `eye` (Van Oosterom and Strackee):
+// positive when it winds counter-clockwise seen from there, up to 2 pi for a hemisphere.
+double solidAngle(const glm::vec3& eye, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
+
+// A shadow volume never holds its light, so its faces' signed solid angles seen from the light
+// sum to zero. The fan holds to that only while the fan and the caster's faces away from the
+// light do not enclose the light together (a light inside an open container: the shadow takes
+// more than half the sky, the fan covers the opening instead). Then the sum is a whole number of
+// spheres, 4 pi each, and so many spheres at infinity (octahedra of directions around the light,
+// facing away from it) are added to the cap's split triangles. lightCap: indices of the volume's
+// light cap (lightCapIndices). Returns the spheres added (negative: facing the light), 0 for a
+// light outside the caster's convex hull.
+int closeAroundLight(DarkCap& cap, const Mesh& welded, const std::vector<std::uint32_t>& lightCap,
+                     const glm::vec3& light);
+
+// A plane n . p + d >= 0 inside; stored as (n, d).
+using Plane = glm::vec4;
+
+// True when the sphere lies entirely outside one of the planes (each plane's inside is its
+// positive side): a conservative "misses the convex region".
+bool sphereOutside(const std::vector<Plane>& planes, const glm::vec3& centre, float radius);
+
+// The camera's near rectangle in world space, corners counter-clockwise as seen by the camera,
+// from the inverse of viewProjection (GL clip conventions).
+std::array<glm::vec3, 4> nearRectangle(const glm::mat4& viewProjection);
+
+// The occlusion pyramid: the region between the light and the near rectangle, as inward planes.
+// Its apex is a point light; a directional light makes it a prism reaching from the near
+// rectangle towards the light. A shadow volume that enters the camera's near rectangle comes
+// from a caster inside it. Four sides, the near plane, and for a point light a plane through it.
+std::vector<Plane> occlusionPyramid(const std::array<glm::vec3, 4>& nearRect, const glm::vec4& light);
+
+// The view frustum's left, right, bottom, top and near planes, inward (no far plane: it may lie
+// at infinity), from viewProjection.
+std::vector<Plane> viewFrustumPlanes(const glm::mat4& viewProjection);
+
+// The paper's three cases for one caster (its world bounding sphere):
+//   1: it misses the occlusion pyramid, its volume cannot reach the near rectangle: z-pass,
+//      sides only;
+//   2: it meets the pyramid but lies outside the view frustum: z-fail, sides and dark cap (the
+//      light cap would not land on the screen);
+//   3: it meets the pyramid and may be seen: z-fail, sides, dark cap and light cap.
+int shadowCase(const std::vector<Plane>& pyramid, const std::vector<Plane>& frustum, const glm::vec3& centre,
+               float radius);
+
+// A caster whose bounds miss the light's bounding sphere shadows nothing the light reaches: the
+// way from any point inside the sphere to the light stays inside it.
+bool culledByLight(const glm::vec3& lightCentre, float lightRadius, const glm::vec3& centre, float radius);
+
+// The window rectangle (GL's origin bottom left) that holds the light's sphere on screen, for
+// glScissor: the projected bounding cube of the sphere, the whole window when the sphere reaches
+// the near plane. Empty (w or h zero) when the sphere is entirely off screen.
+struct ScissorRect {
+  int x = 0, y = 0, width = 0, height = 0;
+};
+ScissorRect lightScissor(const glm::vec3& centre, float radius, const glm::mat4& viewProjection,
+                         glm::ivec2 size);
+
+// The window depths (0..1, GL's default depth range) between which the light's sphere lies, for
+// glDepthBoundsEXT: a visible surface whose depth is outside them lies outside the sphere, and
+// no volume needs to touch its pixel. From 0 when the sphere reaches the near plane.
+struct DepthBounds {
+  float nearest = 0.0f, farthest = 1.0f;
+};
+DepthBounds lightDepthBounds(const glm::vec3& centre, float radius, const glm::mat4& view,
+                             const glm::mat4& projection);
+
+// The world bounding sphere of a mesh placed by a rigid model matrix.
+BoundingSphere worldBounds(const BoundingSphere& local, const glm::mat4& model);
+
+}  // namespace stencil

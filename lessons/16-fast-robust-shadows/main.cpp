@@ -1,0 +1,753 @@
+// Lesson 16: fast, practical and robust shadow volumes (McGuire, Hughes, Egan, Kilgard and
+// Everitt, "Fast, Practical and Robust Shadows", 2003).
+//
+// Lessons 07-09 counted volume faces in front of the scene (z-pass), which breaks when the eye,
+// or the near plane, lies in a shadow. Counting the faces behind the scene instead (z-fail)
+// never meets the near plane, but needs the volume closed at both ends, caps that cost a
+// triangle per caster face. The paper's system pays only where it must:
+//   - every caster keeps a doubled vertex array (each vertex with w = 1 and w = 0); a vertex
+//     shader sends the w = 0 copies to infinity away from the light, so a volume is indices only;
+//   - the possible silhouette (edges between a face towards and a face away from the light) is
+//     found in object space and extruded into side quads that face out of the volume;
+//   - the occlusion pyramid, from the light to the camera's near rectangle, holds every caster
+//     whose volume can reach the eye: outside it (case 1) z-pass with the sides alone; inside it
+//     z-fail with the sides and the dark cap (a fan over the silhouette at infinity), plus the
+//     light cap (the caster's lit faces) only when the caster may be on screen (case 3, not 2);
+//   - each point light has finite bounds: casters that miss them are culled, and the light's
+//     shadow and illumination passes are scissored to their rectangle on screen, and its
+//     volumes depth-bounded where the driver has EXT_depth_bounds_test;
+//   - scene files may bring open meshes, whose faces block light from both sides (a volume from
+//     each side), and lights inside a caster's hull, where the fan comes out a whole sphere off
+//     and gets it back (closeAroundLight);
+//   - the rendering system of its section 8: an ambient pass fills the depth buffer, then per
+//     light, the stencil cleared, its shadow volumes counted, and the light added with stencil
+//     EQUAL 0 and additive blending, into a float target so many lights do not band.
+//
+// Stencil recipe per light, one pass over both faces (two-sided stencil, no culling), depth
+// LESS, depth and colour writes off:
+//   z-pass (case 1)   front faces INCR_WRAP where the depth test passes, back faces DECR_WRAP;
+//   z-fail (2 and 3)  back faces INCR_WRAP where the depth test fails, front faces DECR_WRAP;
+//   light cap         drawn with depth func NEVER: it lies on the caster's own surface, never in
+//                     front of what the depth buffer holds, so it must always take the fail path.
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <limits>
+#include <memory>
+#include <string>
+
+#include "geometry/bounds.h"
+#include "geometry/fast_shadows.h"
+#include "geometry/scene.h"
+#include "geometry/shadow_volume.h"
+#include "geometry/shapes.h"
+#include "gl/gpu_mesh.h"
+#include "gl/lesson.h"
+#include "gl/recorder.h"
+#include "gl/shader.h"
+
+using namespace stencil;
+
+namespace {
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+constexpr int kManyLights = 32;
+
+// An orbit camera placed at `eye`, looking at `target`.
+OrbitCamera lookingFrom(glm::vec3 eye, glm::vec3 target, float fovyDeg) {
+  OrbitCamera c;
+  const glm::vec3 back = eye - target;
+  c.target = target;
+  c.distance = glm::length(back);
+  c.elevationDeg = glm::degrees(std::asin(back.y / c.distance));
+  c.azimuthDeg = glm::degrees(std::atan2(back.x, back.z));
+  c.fovyDeg = fovyDeg;
+  c.farPlane = kInfinity;
+  return c;
+}
+
+// Where the eye sits in the sphere's shadow from the warm light: on the line from the light
+// through the sphere's centre, past the sphere, a little above the ground.
+glm::vec3 underTheSphere() {
+  const glm::vec3 light(-2.0f, 4.6f, 2.4f), sphere(-0.4f, 1.3f, 1.2f);
+  return light + 1.3f * (sphere - light);
+}
+
+// The eye in that shadow looking away from the light, over the cubes: the near plane lies in
+// the sphere's volume, so z-pass alone fails; the sphere is in the occlusion pyramid but out of
+// view (case 2).
+OrbitCamera eyeInShadow() {
+  return lookingFrom(underTheSphere(), {2.0f, 0.3f, -1.6f}, 70.0f);
+}
+
+// Half a unit aside in the same shadow, looking up past the sphere at the stairs: the sphere is
+// in the pyramid and on screen (case 3), its light cap needed.
+OrbitCamera lookingUp() {
+  return lookingFrom(underTheSphere() + glm::vec3(0.5f, 0.0f, 0.0f), {-2.5f, 1.6f, 0.9f}, 70.0f);
+}
+
+LessonInfo lessonInfo() {
+  LessonInfo info;
+  info.id = "16-fast-robust-shadows";
+  info.title = "Fast, practical and robust shadows";
+  info.summary =
+      "McGuire et al.'s shadow-volume system: doubled vertices extruded on the GPU, z-pass or z-fail per\n"
+      "caster from the occlusion pyramid, dark caps as fans, light bounds, many lights in a float target.";
+  info.options = {
+      {"method", 'M',
+       "0 McGuire et al. (per caster: case 1 z-pass, 2 and 3 z-fail), 1 Everitt-Kilgard (always z-fail,\n"
+       "      full caps), 2 Lengyel (z-pass unless a caster is in the pyramid, then full z-fail), 3 z-pass "
+       "only",
+       0, 3},
+      {"light", 'L', "the light drawn last, whose stencil the frame ends with (the one --oracle checks)", 0,
+       kManyLights - 1},
+      {"many", 'N', "thirty-two dim point lights in a ring instead of the scene's four", 0},
+      {"float", 'F', "accumulate light in an RGBA16F target (off: RGBA8, which bands)", 1},
+      {"slices", 'Y', "the sphere's slices, at least 4 (stacks: half as many)", 24, 256},
+      {"light-cap", 'C', "draw the light cap of case-3 casters", 1},
+      {"split", 'G', "split dark-cap fan triangles that span 180 degrees or more", 1},
+      {"bounds", 'B', "cull casters and scissor by the light's bounds", 1},
+      {"moving", 'O', "the moving casters (a torus and a cube above the grid)", 1},
+      {"show", 'X', "overlay: casters coloured by case, their volumes and silhouettes", 0},
+      {"fill", 'I',
+       "measure: each light's volumes drawn again without the depth test, in a pass of their own\n"
+       "      (volume-fill), whose fragments are every fragment the volumes rasterize",
+       0},
+      {"shadow", 'H', "shadows at all (off: every light reaches everything)", 1},
+  };
+  info.camera.target = {-0.2f, 0.6f, 0.0f};
+  info.camera.distance = 10.5f;
+  info.camera.azimuthDeg = 25.0f;
+  info.camera.elevationDeg = 32.0f;
+  info.camera.farPlane = kInfinity;
+  info.variants = {
+      {"system", "the whole system: four lights, every caster by its case", {}},
+      {"case-colours",
+       "casters coloured by their case (green 1, amber 2, red 3, grey culled), volumes and silhouettes",
+       {{"show", 1}}},
+      {"directional",
+       "the directional light drawn last: every volume converges to one point",
+       {{"light", 3}}},
+      {"eye-in-shadow",
+       "the eye in the sphere's shadow, looking away: the sphere in case 2",
+       {},
+       {},
+       eyeInShadow()},
+      {"looking-up",
+       "the eye in the sphere's shadow, looking up past it: the sphere in case 3",
+       {},
+       {},
+       lookingUp()},
+      {"looking-up-colours", "the same with the overlay", {{"show", 1}}, {}, lookingUp()},
+      {"everitt-kilgard", "always z-fail with full caps", {{"method", 1}}, {}, lookingUp()},
+      {"lengyel",
+       "z-pass when no caster is in the pyramid, else full z-fail",
+       {{"method", 2}},
+       {},
+       lookingUp()},
+      {"zpass-only",
+       "z-pass for every caster with the eye in a shadow: the count is wrong",
+       {{"method", 3}},
+       {},
+       eyeInShadow()},
+      {"no-light-cap",
+       "the case-3 sphere without its light cap: the count is wrong",
+       {{"light-cap", 0}},
+       {},
+       lookingUp()},
+      {"no-bounds", "no culling or scissor: the same shadows, more work", {{"bounds", 0}}},
+      {"many-lights", "thirty-two dim lights accumulated in RGBA16F", {{"many", 1}}},
+      {"many-lights-8bit",
+       "the same accumulated in RGBA8: each light rounded, bands",
+       {{"many", 1}, {"float", 0}}},
+  };
+  info.passes = {"ambient", "shadows", "volume-fill", "illumination", "overlay"};
+  return info;
+}
+
+// ---- the scene ------------------------------------------------------------------------------
+
+SceneObject object(std::string name, Mesh mesh, glm::mat4 model, glm::vec3 colour, bool casts = true) {
+  SceneObject o;
+  o.name = std::move(name);
+  o.mesh = std::move(mesh);
+  o.model = model;
+  o.color = colour;
+  o.casts = casts;
+  return o;
+}
+
+// Objects on the ground stand a little into it: a silhouette edge lying in the ground's plane
+// would extrude into a side face coplanar with the ground there, whose depth test is a toss-up.
+constexpr float kSunk = 0.01f;
+
+// In the spirit of the paper's figures: stairs, a grid of cubes, a sphere, two moving casters,
+// coloured attenuated point lights with finite bounds and one directional light.
+Scene builtInScene(int slices, bool many, bool moving) {
+  using glm::translate;
+  const glm::mat4 id(1.0f);
+  Scene s;
+  s.ambient = glm::vec3(0.12f);
+  s.objects.push_back(object("ground", makePlane(7.0f, 1), id, {0.75f, 0.74f, 0.7f}, false));
+  s.objects.push_back(
+      object("stairs", makeStairs(6, 2.2f, 0.3f, 0.45f),
+             glm::rotate(translate(id, {-3.2f, 0.9f - kSunk, 0.25f}), glm::radians(90.0f), {0, 1, 0}),
+             {0.7f, 0.6f, 0.5f}));
+  for (int i = 0; i < 9; ++i) {
+    const float column = static_cast<float>(i % 3), row = static_cast<float>(i / 3),
+                shade = 0.07f * static_cast<float>(i);
+    s.objects.push_back(object("cube-" + std::to_string(i), makeCube(0.28f),
+                               translate(id, {1.0f + column, 0.28f - kSunk, -2.6f + row}),
+                               {0.35f + shade, 0.5f, 0.85f - shade}));
+  }
+  s.objects.push_back(object("sphere", makeSphere(0.7f, slices, std::max(2, slices / 2)),
+                             translate(id, {-0.4f, 1.3f, 1.2f}), {0.85f, 0.35f, 0.3f}));
+  if (moving) {
+    SceneObject torus = object("torus", makeTorus(0.5f, 0.16f, 32, 12), translate(id, {2.0f, 2.1f, -1.6f}),
+                               {0.9f, 0.75f, 0.3f});
+    torus.spinAxis = glm::normalize(glm::vec3(1, 0, 0.4f));
+    torus.spinDegPerSecond = 25.0f;
+    torus.bob = 0.3f;
+    s.objects.push_back(torus);
+    SceneObject spinner =
+        object("spinner", makeCube(0.3f), translate(id, {-1.2f, 2.6f, -1.4f}), {0.5f, 0.8f, 0.55f});
+    spinner.spinAxis = glm::normalize(glm::vec3(1, 1, 0));
+    spinner.spinDegPerSecond = 40.0f;
+    s.objects.push_back(spinner);
+  }
+  if (many) {  // a ring of dim lights: each adds little, the sum is what the eye sees
+    for (int i = 0; i < kManyLights; ++i) {
+      const float a = glm::two_pi<float>() * static_cast<float>(i) / kManyLights;
+      const glm::vec3 hue = 0.5f + 0.5f * glm::vec3(std::cos(a), std::cos(a + 2.1f), std::cos(a + 4.2f));
+      s.lights.push_back({glm::vec4(4.0f * std::cos(a), 3.5f, 4.0f * std::sin(a), 1.0f), 0.06f * hue, 9.0f});
+    }
+  } else {
+    s.lights.push_back({{-2.0f, 4.6f, 2.4f, 1.0f}, {1.0f, 0.78f, 0.55f}, 10.0f});    // warm, above the sphere
+    s.lights.push_back({{3.2f, 3.2f, -0.4f, 1.0f}, {0.45f, 0.6f, 1.0f}, 5.5f});      // blue, over the cubes
+    s.lights.push_back({{-3.0f, 2.8f, -2.6f, 1.0f}, {0.5f, 1.0f, 0.55f}, 4.5f});     // green, small bounds
+    s.lights.push_back({{0.4f, 1.0f, 0.5f, 0.0f}, {0.3f, 0.3f, 0.32f}, kInfinity});  // directional
+  }
+  return s;
+}
+
+// ---- the doubled vertex array on the GPU -------------------------------------------------------
+
+// One caster: its doubled vertices (static), an index buffer rewritten per light (sides, dark
+// cap, light cap one after the other), and the few split dark-cap triangles as vertices.
+class DoubledCaster {
+ public:
+  explicit DoubledCaster(const Mesh& welded) {
+    const std::vector<glm::vec4> vertices = doubledVertexArray(welded);
+    glGenVertexArrays(2, vao_);
+    glGenBuffers(3, buffers_);
+    glBindVertexArray(vao_[0]);
+    glBindBuffer(GL_ARRAY_BUFFER, buffers_[0]);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(glm::vec4)),
+                 vertices.data(), GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[1]);
+    glBindVertexArray(vao_[1]);
+    glBindBuffer(GL_ARRAY_BUFFER, buffers_[2]);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
+    glBindVertexArray(0);
+  }
+  ~DoubledCaster() {
+    glDeleteVertexArrays(2, vao_);
+    glDeleteBuffers(3, buffers_);
+  }
+  DoubledCaster(const DoubledCaster&) = delete;
+  DoubledCaster& operator=(const DoubledCaster&) = delete;
+
+  void upload(const std::vector<std::uint32_t>& indices, const std::vector<glm::vec4>& split) {
+    glBindVertexArray(vao_[0]);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
+                 indices.data(), GL_STREAM_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, buffers_[2]);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(split.size() * sizeof(glm::vec4)), split.data(),
+                 GL_STREAM_DRAW);
+    splitVertices_ = static_cast<GLsizei>(split.size());
+    glBindVertexArray(0);
+  }
+  // Indices [first, first + count) of the uploaded list, as triangles (or lines).
+  void draw(std::size_t first, std::size_t count, GLenum mode = GL_TRIANGLES) const {
+    if (count == 0) return;
+    glBindVertexArray(vao_[0]);
+    glDrawElements(mode, static_cast<GLsizei>(count), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(first * sizeof(std::uint32_t)));
+    countDraw(mode == GL_TRIANGLES ? count / 3 : 0);
+  }
+  void drawSplit() const {
+    if (splitVertices_ == 0) return;
+    glBindVertexArray(vao_[1]);
+    glDrawArrays(GL_TRIANGLES, 0, splitVertices_);
+    countDraw(static_cast<std::uint64_t>(splitVertices_ / 3));
+  }
+
+ private:
+  GLuint vao_[2] = {0, 0}, buffers_[3] = {0, 0, 0};
+  GLsizei splitVertices_ = 0;
+};
+
+// The lesson's own framebuffer: a float (or 8-bit) colour target for the light sum and a packed
+// depth/stencil buffer like the framework's, so depth and stencil copy across unchanged.
+class AccumulationTarget {
+ public:
+  AccumulationTarget(glm::ivec2 size, bool floating) : size_(size), floating_(floating) {
+    glGenFramebuffers(1, &fbo_);
+    glGenRenderbuffers(2, renderbuffers_);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[0]);
+    glRenderbufferStorage(GL_RENDERBUFFER, floating ? GL_RGBA16F : GL_RGBA8, size.x, size.y);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers_[0]);
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[1]);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, size.x, size.y);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                              renderbuffers_[1]);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw std::runtime_error("the accumulation framebuffer is incomplete");
+  }
+  ~AccumulationTarget() {
+    glDeleteFramebuffers(1, &fbo_);
+    glDeleteRenderbuffers(2, renderbuffers_);
+  }
+  AccumulationTarget(const AccumulationTarget&) = delete;
+  AccumulationTarget& operator=(const AccumulationTarget&) = delete;
+
+  bool fits(glm::ivec2 size, bool floating) const { return size == size_ && floating == floating_; }
+  void bind() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    glViewport(0, 0, size_.x, size_.y);
+  }
+  // Colour (clamped to 0..1 by the copy), depth and stencil into the framework's framebuffer,
+  // where the pass snapshots, the stencil pictures and the oracle read them.
+  void copyTo(GLuint framebuffer) const {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+    glBlitFramebuffer(0, 0, size_.x, size_.y, 0, 0, size_.x, size_.y,
+                      GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT, GL_NEAREST);
+  }
+
+ private:
+  glm::ivec2 size_;
+  bool floating_;
+  GLuint fbo_ = 0, renderbuffers_[2] = {0, 0};
+};
+
+// ---- the lesson ---------------------------------------------------------------------------------
+
+constexpr int kMcGuire = 0, kEverittKilgard = 1, kLengyel = 2;  // the method option; 3 is z-pass only
+
+// What one caster draws for one light, as ranges of its uploaded index list.
+struct CasterVolume {
+  int shadowCase = 0;  // 1, 2 or 3 from the pyramid; 0 culled
+  bool zfail = false;
+  std::size_t sides = 0, darkCap = 0, lightCap = 0, silhouette = 0;  // index counts, in this order
+  std::size_t splitTriangles = 0, splitVertices = 0;  // split vertices include spheres' octahedra
+  int spheres = 0;                                    // whole spheres added to the fan
+};
+
+class FastRobustShadows final : public Lesson {
+ public:
+  explicit FastRobustShadows(const Scene* fromFile)
+      : light_("common/light.vert", "16-fast-robust-shadows/light.frag"),
+        extrude_("16-fast-robust-shadows/extrude.vert", "common/flat.frag"),
+        flat_("common/flat.vert", "common/flat.frag") {
+    if (fromFile) setScene(*fromFile);
+  }
+
+  void render(Frame& f) override {
+    prepare(f);
+    // The counts --stats reports, present in every frame whatever happens in it.
+    for (const char* name :
+         {"lights_drawn", "lights_offscreen", "casters_culled", "casters_case1", "casters_case2",
+          "casters_case3", "casters_zfail", "side_triangles", "dark_cap_triangles", "light_cap_triangles",
+          "split_fan_triangles", "fan_spheres", "depth_bounds_used", "depth_bounds_skipped"})
+      f.count(name, 0);
+    for (Caster& c : casters_) c.volume = {};
+    GLint framework = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framework);
+    framework_ = static_cast<GLuint>(framework);
+    if (!target_ || !target_->fits(f.size, f.on("float")))
+      target_ = std::make_unique<AccumulationTarget>(f.size, f.on("float"));
+    target_->bind();
+    const glm::mat4 viewProjection = f.projection * f.view;
+    // A mirrored view turns every triangle round on screen: what faces the eye winds clockwise.
+    glFrontFace(glm::determinant(f.view) < 0.0f ? GL_CW : GL_CCW);
+
+    // ---- ambient: the depth buffer filled once, for every light ------------------------------
+    glClearColor(0.02f, 0.025f, 0.035f, 1.0f);
+    glClearStencil(0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);  // the nearest surface wins
+    glDepthFunc(GL_LESS);
+    glEnable(GL_CULL_FACE);  // every object is closed, or a floor seen from above
+    drawScene(f, glm::vec4(0, 1, 0, 0), glm::vec3(0), kInfinity, scene_.ambient);
+    endPass(f, "ambient");
+
+    // ---- per light: its shadow in the stencil, then its light where the stencil is 0 --------
+    const std::vector<int> order = lightOrder(f);
+    const std::array<glm::vec3, 4> nearRect = nearRectangle(viewProjection);
+    const std::vector<Plane> frustum = viewFrustumPlanes(viewProjection);
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      const SceneLight& light = scene_.lights[static_cast<std::size_t>(order[k])];
+      const bool checked = k + 1 == order.size();
+      const bool point = light.position.w != 0.0f;
+      const float radius = point && f.on("bounds") ? light.radius : kInfinity;
+      const glm::vec3 lightCentre = point ? glm::vec3(light.position) / light.position.w : glm::vec3(0);
+      const ScissorRect rect = lightScissor(lightCentre, radius, viewProjection, f.size);
+      if (rect.width <= 0 || rect.height <= 0) {  // its bounds are off screen: it adds nothing
+        f.count("lights_offscreen");
+        continue;
+      }
+      f.count("lights_drawn");
+      glScissor(rect.x, rect.y, rect.width, rect.height);
+
+      // The stencil cleared everywhere, so what the frame ends with is this light's alone.
+      glStencilMask(0xFF);
+      glClear(GL_STENCIL_BUFFER_BIT);
+      glEnable(GL_SCISSOR_TEST);  // from here on only the light's rectangle is touched
+      const bool depthBounds = hasFeature(f.features, Feature::DepthBoundsTest) && !std::isinf(radius);
+      if (depthBounds) {  // volumes skip pixels whose surface lies in front of or behind the sphere
+        const DepthBounds range = lightDepthBounds(lightCentre, radius, f.view, f.projection);
+        glEnable(GL_DEPTH_BOUNDS_TEST_EXT);
+        glDepthBoundsEXT(range.nearest, range.farthest);
+      }
+      f.count(depthBounds ? "depth_bounds_used" : "depth_bounds_skipped");
+      if (f.on("shadow")) drawShadows(f, light, lightCentre, radius, nearRect, frustum, checked);
+      if (depthBounds) glDisable(GL_DEPTH_BOUNDS_TEST_EXT);
+      endPass(f, "shadows");
+      f.shadowMask("light-" + std::to_string(order[k]));
+      target_->bind();                       // reading the mask may have bound another framebuffer
+      if (f.on("fill") && f.on("shadow")) {  // the fill the stencil test saw, for --stats
+        drawVolumeFill();
+        endPass(f, "volume-fill");
+      }
+
+      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);  // the light's colour is added
+      glDepthMask(GL_FALSE);                            // onto the surfaces already there
+      glDepthFunc(GL_EQUAL);                            // exactly the ambient pass's surfaces
+      glEnable(GL_STENCIL_TEST);
+      glStencilFunc(GL_EQUAL, 0, 0xFF);        // outside every volume
+      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);  // the count stays for the next look
+      glEnable(GL_BLEND);
+      glBlendFunc(GL_ONE, GL_ONE);                                            // light adds up
+      drawScene(f, light.position, light.color, light.radius, glm::vec3(0));  // its own fall-off
+      glDisable(GL_BLEND);
+      glDisable(GL_STENCIL_TEST);
+      glDisable(GL_SCISSOR_TEST);
+      glDepthFunc(GL_LESS);
+      glDepthMask(GL_TRUE);
+      endPass(f, "illumination");
+    }
+
+    // Per caster, for the light drawn last: its case (0 culled) and what its volume cost.
+    for (const Caster& c : casters_) {
+      const std::string& name = scene_.objects[c.object].name;
+      f.count("case." + name, static_cast<std::uint64_t>(c.volume.shadowCase));
+      f.count("sides." + name, c.volume.sides / 3);
+      f.count("dark_cap." + name, c.volume.darkCap / 3 + c.volume.splitVertices / 3);
+      f.count("light_cap." + name, c.volume.lightCap / 3);
+    }
+
+    // ---- the classroom's view: cases, volumes, silhouettes of the light drawn last ------------
+    glBindFramebuffer(GL_FRAMEBUFFER, framework_);
+    if (f.on("show")) drawOverlay(f);
+    glDisable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);  // GL's default again
+    f.pass("overlay");
+  }
+
+  std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
+    if (!f.on("shadow") || scene_.lights.empty()) return std::nullopt;
+    const SceneLight& light = scene_.lights[static_cast<std::size_t>(lightOrder(f).back())];
+    ShadowCheck check{{}, light.position, [](std::uint8_t s) { return s == 0; }, true};
+    if (f.on("bounds")) check.lightRadius = light.radius;
+    for (const SceneObject& o : scene_.objects)
+      check.objects.push_back({&o.mesh, o.modelAt(f.time), o.casts, o.receives});
+    return check;
+  }
+
+ private:
+  struct Caster {
+    std::size_t object;
+    BoundingSphere bounds;  // object space
+    std::unique_ptr<DoubledCaster> gpu;
+    CasterVolume volume;  // for the light drawn last
+  };
+
+  void setScene(const Scene& scene) {
+    scene_ = scene;
+    fromFile_ = !scene.file.empty();
+    drawn_.clear();
+    closed_.clear();
+    casters_.clear();
+    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+      SceneObject& o = scene_.objects[i];
+      drawn_.push_back(std::make_unique<GpuMesh>(o.mesh));
+      if (!o.casts) {
+        closed_.push_back(prepareCaster(o.mesh).report.closed());
+        continue;
+      }
+      if (o.caster.mesh.positions.empty()) o.caster = prepareCaster(o.mesh);
+      closed_.push_back(o.caster.report.closed());
+      casters_.push_back(
+          {i, boundingSphereOf(o.caster.mesh.positions), std::make_unique<DoubledCaster>(o.caster.mesh), {}});
+    }
+  }
+
+  // The built-in scene follows the options that shape it.
+  void prepare(const Frame& f) {
+    if (fromFile_) return;
+    const int key = std::max(4, f.option("slices")) * 4 + f.option("many") * 2 + f.option("moving");
+    if (key == sceneKey_) return;
+    sceneKey_ = key;
+    setScene(builtInScene(std::max(4, f.option("slices")), f.on("many"), f.on("moving")));
+  }
+
+  // Every light once, the chosen one last.
+  std::vector<int> lightOrder(const Frame& f) const {
+    const int n = static_cast<int>(scene_.lights.size());
+    const int last = std::min(f.option("light"), n - 1);
+    std::vector<int> order;
+    for (int i = 0; i < n; ++i)
+      if (i != last) order.push_back(i);
+    order.push_back(last);
+    return order;
+  }
+
+  void endPass(Frame& f, const char* name) {
+    target_->copyTo(framework_);
+    f.pass(name);
+    target_->bind();  // the recorder binds the framework's framebuffer after each pass
+  }
+
+  // ---- the shadow volumes of one light ------------------------------------------------------
+
+  void drawShadows(Frame& f, const SceneLight& light, const glm::vec3& lightCentre, float radius,
+                   const std::array<glm::vec3, 4>& nearRect, const std::vector<Plane>& frustum,
+                   bool checked) {
+    const int method = f.option("method");
+    fillTime_ = f.time;
+    fillLight_ = light.position;
+    const std::vector<Plane> pyramid = occlusionPyramid(nearRect, light.position);
+    // Everything that decides each caster's volume first (Lengyel's choice needs all of them).
+    struct Choice {
+      int shadowCase = 0;  // 0 culled
+      BoundingSphere world;
+    };
+    std::vector<Choice> choices(casters_.size());
+    bool anyInPyramid = false;
+    for (std::size_t c = 0; c < casters_.size(); ++c) {
+      const SceneObject& o = scene_.objects[casters_[c].object];
+      choices[c].world = worldBounds(casters_[c].bounds, o.modelAt(f.time));
+      if (!std::isinf(radius) &&
+          culledByLight(lightCentre, radius, choices[c].world.center, choices[c].world.radius))
+        continue;
+      choices[c].shadowCase = shadowCase(pyramid, frustum, choices[c].world.center, choices[c].world.radius);
+      anyInPyramid |= choices[c].shadowCase != 1;
+    }
+
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // only the stencil changes
+    glDepthMask(GL_FALSE);                                // volumes are not surfaces
+    glDepthFunc(GL_LESS);                                 // in front of the scene: pass; behind: fail
+    glDisable(GL_CULL_FACE);                              // both faces in one draw, two-sided stencil
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, 0, 0xFF);  // every volume fragment counts
+    lightVolumes_.clear();
+    for (std::size_t c = 0; c < casters_.size(); ++c) {
+      Caster& caster = casters_[c];
+      const SceneObject& o = scene_.objects[caster.object];
+      CasterVolume v;
+      v.shadowCase = choices[c].shadowCase;
+      if (v.shadowCase == 0) {
+        f.count("casters_culled");
+        if (checked) caster.volume = v;
+        continue;
+      }
+      f.count("casters_case" + std::to_string(v.shadowCase));
+      // Full z-fail (both caps of every volume) for Everitt-Kilgard, and for Lengyel once any caster
+      // is in the pyramid; z-pass only never.
+      const bool everittKilgard = method == kEverittKilgard || (method == kLengyel && anyInPyramid);
+      v.zfail = method == kMcGuire ? v.shadowCase != 1 : everittKilgard;
+      const glm::mat4 model = o.modelAt(f.time);
+      const glm::vec4 local = glm::inverse(model) * light.position;  // the light in the caster's space
+      buildVolume(f, caster, local, v, everittKilgard);
+      if (v.zfail) f.count("casters_zfail");
+      f.count("side_triangles", v.sides / 3);
+      f.count("dark_cap_triangles", v.darkCap / 3 + v.splitVertices / 3);
+      f.count("light_cap_triangles", v.lightCap / 3);
+      f.count("split_fan_triangles", v.splitTriangles);
+      f.count("fan_spheres", static_cast<std::uint64_t>(v.spheres));
+
+      extrude_.set("viewProjection", f.projection * f.view);
+      extrude_.set("model", model);
+      extrude_.set("light", local);
+      if (!v.zfail) {  // z-pass: count the faces in front of the scene
+        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);  // the eye ray enters a volume
+        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);   // and leaves it
+        caster.gpu->draw(0, v.sides);
+      } else {  // z-fail: count the faces behind the scene, the volume closed at both ends
+        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);   // behind: the ray leaves a volume
+        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);  // behind: it enters one
+        caster.gpu->draw(0, v.sides + v.darkCap);  // the dark cap at infinity fails LESS by itself
+        caster.gpu->drawSplit();
+        glDepthFunc(GL_NEVER);  // the light cap lies on the caster's surface: never in front of it
+        caster.gpu->draw(v.sides + v.darkCap, v.lightCap);
+        glDepthFunc(GL_LESS);
+      }
+      if (checked) caster.volume = v;
+      lightVolumes_.push_back({c, v});
+    }
+    glDisable(GL_STENCIL_TEST);
+    glEnable(GL_CULL_FACE);  // the scene's own culling again
+  }
+
+  // The light's volumes once more, every fragment passing: nothing written, only counted by the
+  // pass's occlusion query. The same geometry and scissor as the shadows pass.
+  void drawVolumeFill() {
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_DEPTH_TEST);  // in front of the scene or behind, every fragment is fill
+    glDisable(GL_CULL_FACE);
+    for (const auto& [c, v] : lightVolumes_) {
+      const SceneObject& o = scene_.objects[casters_[c].object];
+      extrude_.set("model", o.modelAt(fillTime_));
+      extrude_.set("light", glm::inverse(o.modelAt(fillTime_)) * fillLight_);
+      casters_[c].gpu->draw(0, v.sides + v.darkCap + v.lightCap);
+      casters_[c].gpu->drawSplit();
+    }
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_CULL_FACE);
+  }
+
+  // The indices of one caster's volume for a light in its own space: sides, dark cap and light
+  // cap one after the other, then its silhouette as lines (for the overlay).
+  void buildVolume(const Frame& f, Caster& caster, const glm::vec4& light, CasterVolume& v, bool fullCaps) {
+    const PreparedCaster& prepared = scene_.objects[caster.object].caster;
+    const Mesh& mesh = prepared.mesh;
+    const std::vector<bool> lit = facesLight(mesh, light);
+    // An open mesh (a scene file's) blocks light with both sides of its faces: two volumes.
+    const bool twoSided = !prepared.report.closed();
+    const std::vector<SilhouetteEdge> edges = twoSided ? twoSidedSilhouetteEdges(prepared.adjacency, lit)
+                                                       : silhouetteEdges(prepared.adjacency, lit);
+    const bool directional = light.w == 0.0f;
+    std::vector<std::uint32_t> indices = sideIndices(mesh, edges, directional);
+    v.sides = indices.size();
+    std::vector<glm::vec4> split;
+    if (v.zfail && !directional) {  // a directional light's far ends are one point: no dark cap
+      std::vector<std::uint32_t> dark;
+      if (fullCaps) {
+        dark = backFaceDarkCapIndices(mesh, lit, twoSided);
+      } else {
+        const glm::vec3 point = glm::vec3(light) / light.w;
+        DarkCap fan = fanDarkCap(mesh, edges, point, f.on("split") ? 179.0f : 361.0f);
+        // The fan is a whole sky off when it and the caster enclose the light (CPU work: O(f)).
+        v.spheres = std::abs(closeAroundLight(fan, mesh, lightCapIndices(mesh, lit, twoSided), point));
+        dark = fan.indices;
+        split = fan.split;
+        v.splitTriangles = fan.splitTriangles;
+        v.splitVertices = split.size();
+      }
+      indices.insert(indices.end(), dark.begin(), dark.end());
+      v.darkCap = dark.size();
+    }
+    const bool lightCap = v.zfail && (fullCaps || (v.shadowCase == 3 && f.on("light-cap")));
+    if (lightCap) {
+      const std::vector<std::uint32_t> cap = lightCapIndices(mesh, lit, twoSided);
+      indices.insert(indices.end(), cap.begin(), cap.end());
+      v.lightCap = cap.size();
+    }
+    for (const SilhouetteEdge& e : edges) indices.insert(indices.end(), {e.v0, e.v1});
+    v.silhouette = 2 * edges.size();
+    caster.gpu->upload(indices, split);
+  }
+
+  // ---- the scene -----------------------------------------------------------------------------
+
+  void drawScene(const Frame& f, glm::vec4 light, glm::vec3 colour, float radius, glm::vec3 ambient) {
+    light_.set("viewProjection", f.projection * f.view);
+    light_.set("ambient", ambient);
+    light_.set("light", light);
+    light_.set("lightColour", colour);
+    light_.set("radius", std::isinf(radius) ? 1e30f : radius);
+    light_.set("eye", f.eye);
+    light_.set("shininess", 24.0f);
+    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+      const SceneObject& o = scene_.objects[i];
+      light_.set("model", o.modelAt(f.time));
+      light_.set("colour", o.color);
+      if (closed_[i])
+        glEnable(GL_CULL_FACE);  // a closed object's back faces are hidden anyway
+      else
+        glDisable(GL_CULL_FACE);  // an open surface is seen, and blocks light, from both sides
+      drawn_[i]->draw();
+    }
+    glEnable(GL_CULL_FACE);
+  }
+
+  void drawOverlay(const Frame& f) {
+    const glm::vec4 caseColour[4] = {{0.5f, 0.5f, 0.5f, 0.55f},
+                                     {0.2f, 0.85f, 0.3f, 0.55f},
+                                     {1.0f, 0.7f, 0.1f, 0.55f},
+                                     {1.0f, 0.15f, 0.1f, 0.55f}};
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);  // the overlay changes no depth (and, stencil test off, no stencil)
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(-1.0f, -1.0f);  // the tint lies on the caster, drawn by another shader
+    for (const Caster& c : casters_) {
+      const SceneObject& o = scene_.objects[c.object];
+      flat_.set("transform", f.projection * f.view * o.modelAt(f.time));
+      flat_.set("colour", caseColour[c.volume.shadowCase]);
+      drawn_[c.object]->draw();
+    }
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_CULL_FACE);  // both sides of the volumes show
+    const SceneLight& light = scene_.lights[static_cast<std::size_t>(lightOrder(f).back())];
+    for (const Caster& c : casters_) {
+      if (c.volume.shadowCase == 0) continue;
+      const glm::mat4 model = scene_.objects[c.object].modelAt(f.time);
+      extrude_.set("viewProjection", f.projection * f.view);
+      extrude_.set("model", model);
+      extrude_.set("light", glm::inverse(model) * light.position);
+      glm::vec4 colour = caseColour[c.volume.shadowCase];
+      colour.a = 0.12f;
+      extrude_.set("colour", colour);
+      c.gpu->draw(0, c.volume.sides + c.volume.darkCap + c.volume.lightCap);
+      c.gpu->drawSplit();
+      extrude_.set("colour", glm::vec4(1.0f, 1.0f, 0.6f, 1.0f));
+      glDepthFunc(GL_ALWAYS);  // the silhouettes show through their casters
+      c.gpu->draw(c.volume.sides + c.volume.darkCap + c.volume.lightCap, c.volume.silhouette, GL_LINES);
+      glDepthFunc(GL_LEQUAL);
+    }
+    glDisable(GL_BLEND);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+  }
+
+  Program light_, extrude_, flat_;
+  Scene scene_;
+  bool fromFile_ = false;
+  int sceneKey_ = -1;
+  std::vector<std::unique_ptr<GpuMesh>> drawn_;
+  std::vector<bool> closed_;  // per object: a closed mesh, drawn with back faces culled
+  std::vector<Caster> casters_;
+  std::vector<std::pair<std::size_t, CasterVolume>> lightVolumes_;  // the current light's, by caster
+  double fillTime_ = 0.0;                                           // and what drawVolumeFill needs
+  glm::vec4 fillLight_{0.0f};
+  std::unique_ptr<AccumulationTarget> target_;
+  GLuint framework_ = 0;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return runSceneLesson(
+      lessonInfo(), [](const Scene* fromFile) { return std::make_unique<FastRobustShadows>(fromFile); }, argc,
+      argv);
+}

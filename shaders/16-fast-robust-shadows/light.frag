@@ -1,0 +1,30 @@
+#version 330 core
+// Ambient, or one light added onto what is there: diffuse and a Blinn-Phong highlight. A point
+// light fades with distance and reaches exactly zero at its radius, its bounds: outside them it
+// adds nothing, so nothing outside needs its shadow (the scissor rectangle and caster culling).
+in vec3 worldPosition;
+in vec3 worldNormal;
+
+uniform vec3 colour;       // albedo
+uniform vec3 ambient;      // ambient light (0 in the light passes)
+uniform vec4 light;        // w = 1 a point, w = 0 a direction towards the light
+uniform vec3 lightColour;  // 0 in the ambient pass
+uniform float radius;      // a point light's bounds
+uniform vec3 eye;
+uniform float shininess;
+
+out vec4 fragColour;
+
+void main() {
+  vec3 n = normalize(worldNormal);
+  vec3 toLight = light.xyz - light.w * worldPosition;
+  float distance = length(toLight);
+  toLight /= distance;
+  float window = light.w == 0.0 ? 1.0 : pow(max(1.0 - pow(distance / radius, 2.0), 0.0), 2.0);
+  float falloff = light.w == 0.0 ? 1.0 : window / (1.0 + 0.04 * distance * distance);
+  float diffuse = max(dot(n, toLight), 0.0);
+  vec3 halfway = normalize(toLight + normalize(eye - worldPosition));
+  float highlight = diffuse > 0.0 ? pow(max(dot(n, halfway), 0.0), shininess) : 0.0;
+  vec3 lit = lightColour * falloff * (colour * diffuse + vec3(0.4 * highlight));
+  fragColour = vec4(colour * ambient + lit, 1.0);
+}
