@@ -107,7 +107,8 @@ LessonInfo lessonInfo() {
       {"zpass", 'Z', "count in front of the surface (z-pass) instead of behind it (z-fail)", 0},
       {"caps", 'C', "close the volumes with their caps (off: the sides alone, all that z-pass needs)", 1},
       {"depth-clamp", 'D', "GL_DEPTH_CLAMP while counting: nothing beyond the far plane is clipped", 0},
-      {"lights", 'N', "how many of the scene's lights shine, the first ones (0: all)", 0, 8},
+      {"lights", 'N',
+       "how many of the built-in scene's lights shine, the first ones (0: all; a file's all shine)", 0, 8},
       {"directional", 'L', "the first light becomes a directional light", 0},
       {"last", 'K', "the light drawn last, whose count the stencil keeps (--oracle checks it)", 0, 8},
       {"shadow", 'H', "shadows at all (off: every light everywhere)", 1},
@@ -219,6 +220,7 @@ class RobustZFail final : public Lesson {
   explicit RobustZFail(const Scene* fromFile)
       : owned_(fromFile ? Scene{} : builtInScene()),
         scene_(fromFile ? *fromFile : owned_),
+        fromFile_(fromFile != nullptr),
         light_("common/light.vert", "common/light.frag"),
         volume_("15-robust-zfail/volume.vert", "common/flat.frag") {
     checkRequirements(scene_);
@@ -317,7 +319,7 @@ class RobustZFail final : public Lesson {
 
   // The shining lights, the one named by "last" moved to the end.
   std::vector<ShiningLight> lightsInOrder(const Frame& f) const {
-    const auto wanted = static_cast<std::size_t>(f.option("lights"));
+    const auto wanted = fromFile_ ? std::size_t{0} : static_cast<std::size_t>(f.option("lights"));
     const std::size_t n = wanted == 0 ? scene_.lights.size() : std::min(wanted, scene_.lights.size());
     std::vector<ShiningLight> lights;
     for (std::size_t i = 0; i < n; ++i) lights.push_back({i, scene_.lights[i]});
@@ -441,6 +443,7 @@ class RobustZFail final : public Lesson {
 
   Scene owned_;         // the built-in scene, when there is no file
   const Scene& scene_;  // the one drawn
+  bool fromFile_;       // a file's lights all shine; the variants pick among the built-in scene's
   bool mirroredView_ = false;
   Program light_, volume_;
   std::vector<std::unique_ptr<GpuMesh>> gpu_;

@@ -136,7 +136,7 @@ TEST(RobustZFail, StatsCountTheClosedVolumesParts) {
 }
 
 TEST(RobustZFail, ASceneFileGetsAMaskPerLightTheLastOneIsTheFinalStencil) {
-  // The two-light scene file: every light shines (lights=0) and writes its mask after its
+  // The two-light scene file: every light shines and writes its mask after its
   // volumes are counted; the light drawn last leaves its count in the stencil.
   const std::string scene = std::string(SCENES_DIR) + "/two-lights.scene";
   for (int last = 0; last < 2; ++last) {
@@ -145,7 +145,7 @@ TEST(RobustZFail, ASceneFileGetsAMaskPerLightTheLastOneIsTheFinalStencil) {
                      (std::string(test->name()) + "-masks-" + std::to_string(last));
     std::filesystem::remove_all(dir);
     const auto r = run("last-" + std::to_string(last),
-                       "--scene " + scene + " --set lights=0 --set last=" + std::to_string(last) +
+                       "--scene " + scene + " --set last=" + std::to_string(last) +
                            " --mask-out " + dir.string());
     if (!r) GTEST_SKIP() << "no GL context";
     ASSERT_TRUE(std::filesystem::exists(dir / "light-0.png"));
