@@ -53,7 +53,7 @@ void GpuMesh::draw() const {
   countDraw(triangles());
 }
 
-GpuTriangles::GpuTriangles() {
+GpuVertexStream::GpuVertexStream(GLenum mode) : mode_(mode) {
   glGenVertexArrays(1, &vao_);
   glBindVertexArray(vao_);
   glGenBuffers(1, &buffer_);
@@ -63,50 +63,22 @@ GpuTriangles::GpuTriangles() {
   glBindVertexArray(0);
 }
 
-GpuTriangles::~GpuTriangles() {
+GpuVertexStream::~GpuVertexStream() {
   glDeleteVertexArrays(1, &vao_);
   glDeleteBuffers(1, &buffer_);
 }
 
-void GpuTriangles::upload(const std::vector<glm::vec4>& vertices) {
+void GpuVertexStream::upload(const std::vector<glm::vec4>& vertices) {
   vertexCount_ = static_cast<GLsizei>(vertices.size());
   glBindBuffer(GL_ARRAY_BUFFER, buffer_);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(glm::vec4)), vertices.data(),
-               GL_STREAM_DRAW);  // orphans last frame's volume
+               GL_STREAM_DRAW);  // orphans last frame's contents
 }
 
-void GpuTriangles::draw() const {
+void GpuVertexStream::draw() const {
   glBindVertexArray(vao_);
-  glDrawArrays(GL_TRIANGLES, 0, vertexCount_);
+  glDrawArrays(mode_, 0, vertexCount_);
   countDraw(triangles());
-}
-
-GpuLines::GpuLines() {
-  glGenVertexArrays(1, &vao_);
-  glBindVertexArray(vao_);
-  glGenBuffers(1, &buffer_);
-  glBindBuffer(GL_ARRAY_BUFFER, buffer_);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
-  glBindVertexArray(0);
-}
-
-GpuLines::~GpuLines() {
-  glDeleteVertexArrays(1, &vao_);
-  glDeleteBuffers(1, &buffer_);
-}
-
-void GpuLines::upload(const std::vector<glm::vec4>& vertices) {
-  vertexCount_ = static_cast<GLsizei>(vertices.size());
-  glBindBuffer(GL_ARRAY_BUFFER, buffer_);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(glm::vec4)), vertices.data(),
-               GL_STREAM_DRAW);
-}
-
-void GpuLines::draw() const {
-  glBindVertexArray(vao_);
-  glDrawArrays(GL_LINES, 0, vertexCount_);
-  countDraw(0);
 }
 
 }  // namespace stencil

@@ -30,39 +30,37 @@ class GpuMesh {
   GLsizei indexCount_ = 0;
 };
 
-class GpuTriangles {
+// Homogeneous vertices (vec4: w = 0 for points at infinity) replaced each frame and drawn as one
+// primitive type: shadow volumes built on the CPU, silhouettes as lines.
+class GpuVertexStream {
  public:
-  GpuTriangles();
-  ~GpuTriangles();
-  GpuTriangles(const GpuTriangles&) = delete;
-  GpuTriangles& operator=(const GpuTriangles&) = delete;
+  explicit GpuVertexStream(GLenum mode);
+  ~GpuVertexStream();
+  GpuVertexStream(const GpuVertexStream&) = delete;
+  GpuVertexStream& operator=(const GpuVertexStream&) = delete;
 
-  // Replaces the contents: three vertices per triangle.
+  // Replaces the contents.
   void upload(const std::vector<glm::vec4>& vertices);
   // One draw call, counted by the pass recorder for --stats.
   void draw() const;
-  std::uint64_t triangles() const { return static_cast<std::uint64_t>(vertexCount_ / 3); }
+  std::uint64_t triangles() const {
+    return mode_ == GL_TRIANGLES ? static_cast<std::uint64_t>(vertexCount_ / 3) : 0;
+  }
 
  private:
+  GLenum mode_;
   GLuint vao_ = 0, buffer_ = 0;
   GLsizei vertexCount_ = 0;
 };
 
-class GpuLines {
- public:
-  GpuLines();
-  ~GpuLines();
-  GpuLines(const GpuLines&) = delete;
-  GpuLines& operator=(const GpuLines&) = delete;
+// Three vertices per triangle.
+struct GpuTriangles : GpuVertexStream {
+  GpuTriangles() : GpuVertexStream(GL_TRIANGLES) {}
+};
 
-  // Replaces the contents: two vertices per segment.
-  void upload(const std::vector<glm::vec4>& vertices);
-  // One draw call, counted by the pass recorder for --stats (as no triangles).
-  void draw() const;
-
- private:
-  GLuint vao_ = 0, buffer_ = 0;
-  GLsizei vertexCount_ = 0;
+// Two vertices per segment.
+struct GpuLines : GpuVertexStream {
+  GpuLines() : GpuVertexStream(GL_LINES) {}
 };
 
 }  // namespace stencil
