@@ -83,6 +83,18 @@ std::vector<OracleObject> oracleObjects(const Scene& scene, double time) {
   return objects;
 }
 
+SceneObject sceneObject(std::string name, Mesh mesh, const glm::mat4& model, const glm::vec3& color,
+                        bool casts) {
+  SceneObject o;
+  o.name = std::move(name);
+  o.mesh = std::move(mesh);
+  o.model = model;
+  o.color = color;
+  o.casts = casts;
+  if (casts) o.caster = prepareCaster(o.mesh);
+  return o;
+}
+
 glm::mat4 SceneObject::modelAt(double time) const {
   const float t = static_cast<float>(time);
   glm::mat4 m = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, bob * std::sin(t), 0.0f)) * model;

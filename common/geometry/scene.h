@@ -71,6 +71,10 @@ struct SceneObject {
   PreparedCaster caster;  // filled for casters when the scene is read
 };
 
+// An object for a scene built in code, its caster prepared as a file's would be.
+SceneObject sceneObject(std::string name, Mesh mesh, const glm::mat4& model, const glm::vec3& color,
+                        bool casts = true);
+
 struct SceneCamera {
   glm::vec3 eye{0.0f, 3.0f, 8.0f}, target{0.0f}, up{0.0f, 1.0f, 0.0f};
   float fovyDeg = 45.0f;

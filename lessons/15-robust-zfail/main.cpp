@@ -169,14 +169,7 @@ Scene builtInScene() {
   Scene scene;
   scene.ambient = glm::vec3(0.22f);
   const auto add = [&scene](std::string name, Mesh mesh, glm::mat4 model, glm::vec3 colour, bool casts) {
-    SceneObject o;
-    o.name = std::move(name);
-    o.mesh = std::move(mesh);
-    o.model = model;
-    o.color = colour;
-    o.casts = casts;
-    if (casts) o.caster = prepareCaster(o.mesh);
-    scene.objects.push_back(std::move(o));
+    scene.objects.push_back(sceneObject(std::move(name), std::move(mesh), model, colour, casts));
     return &scene.objects.back();
   };
   const glm::mat4 wall =

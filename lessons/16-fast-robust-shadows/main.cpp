@@ -168,16 +168,6 @@ LessonInfo lessonInfo() {
 
 // ---- the scene ------------------------------------------------------------------------------
 
-SceneObject object(std::string name, Mesh mesh, glm::mat4 model, glm::vec3 colour, bool casts = true) {
-  SceneObject o;
-  o.name = std::move(name);
-  o.mesh = std::move(mesh);
-  o.model = model;
-  o.color = colour;
-  o.casts = casts;
-  return o;
-}
-
 // Objects on the ground stand a little into it: a silhouette edge lying in the ground's plane
 // would extrude into a side face coplanar with the ground there, whose depth test is a toss-up.
 constexpr float kSunk = 0.01f;
@@ -189,29 +179,29 @@ Scene builtInScene(int slices, bool many, bool moving) {
   const glm::mat4 id(1.0f);
   Scene s;
   s.ambient = glm::vec3(0.12f);
-  s.objects.push_back(object("ground", makePlane(7.0f, 1), id, {0.75f, 0.74f, 0.7f}, false));
+  s.objects.push_back(sceneObject("ground", makePlane(7.0f, 1), id, {0.75f, 0.74f, 0.7f}, false));
   s.objects.push_back(
-      object("stairs", makeStairs(6, 2.2f, 0.3f, 0.45f),
-             glm::rotate(translate(id, {-3.2f, 0.9f - kSunk, 0.25f}), glm::radians(90.0f), {0, 1, 0}),
-             {0.7f, 0.6f, 0.5f}));
+      sceneObject("stairs", makeStairs(6, 2.2f, 0.3f, 0.45f),
+                  glm::rotate(translate(id, {-3.2f, 0.9f - kSunk, 0.25f}), glm::radians(90.0f), {0, 1, 0}),
+                  {0.7f, 0.6f, 0.5f}));
   for (int i = 0; i < 9; ++i) {
     const float column = static_cast<float>(i % 3), row = static_cast<float>(i / 3),
                 shade = 0.07f * static_cast<float>(i);
-    s.objects.push_back(object("cube-" + std::to_string(i), makeCube(0.28f),
-                               translate(id, {1.0f + column, 0.28f - kSunk, -2.6f + row}),
-                               {0.35f + shade, 0.5f, 0.85f - shade}));
+    s.objects.push_back(sceneObject("cube-" + std::to_string(i), makeCube(0.28f),
+                                    translate(id, {1.0f + column, 0.28f - kSunk, -2.6f + row}),
+                                    {0.35f + shade, 0.5f, 0.85f - shade}));
   }
-  s.objects.push_back(object("sphere", makeSphere(0.7f, slices, std::max(2, slices / 2)),
-                             translate(id, {-0.4f, 1.3f, 1.2f}), {0.85f, 0.35f, 0.3f}));
+  s.objects.push_back(sceneObject("sphere", makeSphere(0.7f, slices, std::max(2, slices / 2)),
+                                  translate(id, {-0.4f, 1.3f, 1.2f}), {0.85f, 0.35f, 0.3f}));
   if (moving) {
-    SceneObject torus = object("torus", makeTorus(0.5f, 0.16f, 32, 12), translate(id, {2.0f, 2.1f, -1.6f}),
-                               {0.9f, 0.75f, 0.3f});
+    SceneObject torus = sceneObject("torus", makeTorus(0.5f, 0.16f, 32, 12),
+                                    translate(id, {2.0f, 2.1f, -1.6f}), {0.9f, 0.75f, 0.3f});
     torus.spinAxis = glm::normalize(glm::vec3(1, 0, 0.4f));
     torus.spinDegPerSecond = 25.0f;
     torus.bob = 0.3f;
     s.objects.push_back(torus);
     SceneObject spinner =
-        object("spinner", makeCube(0.3f), translate(id, {-1.2f, 2.6f, -1.4f}), {0.5f, 0.8f, 0.55f});
+        sceneObject("spinner", makeCube(0.3f), translate(id, {-1.2f, 2.6f, -1.4f}), {0.5f, 0.8f, 0.55f});
     spinner.spinAxis = glm::normalize(glm::vec3(1, 1, 0));
     spinner.spinDegPerSecond = 40.0f;
     s.objects.push_back(spinner);
