@@ -26,17 +26,9 @@ Scene builtInScene() {
   scene.camera.eye = {4.0f, 4.0f, 6.0f};
   scene.camera.nearPlane = 0.5f;
   scene.lights.push_back({.position = {1.5f, 4.0f, -0.8f, 1.0f}, .color = glm::vec3(1.0f)});
-  SceneObject ground;
-  ground.name = "ground";
-  ground.mesh = makePlane(4.0f);
-  ground.casts = false;
-  scene.objects.push_back(ground);
-  SceneObject box;
-  box.name = "box";
-  box.mesh = makeCube(0.5f);
-  box.model = glm::translate(glm::mat4(1.0f), {0.0f, 1.0f, 0.0f});
-  box.caster = prepareCaster(box.mesh);
-  scene.objects.push_back(box);
+  scene.objects.push_back(sceneObject("ground", makePlane(4.0f), glm::mat4(1.0f), glm::vec3(0.8f), false));
+  scene.objects.push_back(sceneObject("box", makeCube(0.5f),
+                                      glm::translate(glm::mat4(1.0f), {0.0f, 1.0f, 0.0f}), glm::vec3(0.8f)));
   return scene;
 }
 
