@@ -627,6 +627,10 @@ class FastRobustShadows final : public Lesson {
     std::vector<std::uint32_t> indices = sideIndices(mesh, edges, directional);
     v.sides = indices.size();
     std::vector<glm::vec4> split;
+    const bool lightCap = v.zfail && (fullCaps || (v.shadowCase == 3 && f.on("light-cap")));
+    // The lit faces: the light cap, and what the fan's test for an enclosed light needs.
+    std::vector<std::uint32_t> cap;
+    if (lightCap || (v.zfail && !directional && !fullCaps)) cap = lightCapIndices(mesh, lit, twoSided);
     if (v.zfail && !directional) {  // a directional light's far ends are one point: no dark cap
       std::vector<std::uint32_t> dark;
       if (fullCaps) {
@@ -635,7 +639,7 @@ class FastRobustShadows final : public Lesson {
         const glm::vec3 point = glm::vec3(light) / light.w;
         DarkCap fan = fanDarkCap(mesh, edges, point, f.on("split") ? 179.0f : 361.0f);
         // The fan is a whole sky off when it and the caster enclose the light (CPU work: O(f)).
-        v.spheres = std::abs(closeAroundLight(fan, mesh, lightCapIndices(mesh, lit, twoSided), point));
+        v.spheres = std::abs(closeAroundLight(fan, mesh, cap, point));
         dark = fan.indices;
         split = fan.split;
         v.splitTriangles = fan.splitTriangles;
@@ -644,9 +648,7 @@ class FastRobustShadows final : public Lesson {
       indices.insert(indices.end(), dark.begin(), dark.end());
       v.darkCap = dark.size();
     }
-    const bool lightCap = v.zfail && (fullCaps || (v.shadowCase == 3 && f.on("light-cap")));
     if (lightCap) {
-      const std::vector<std::uint32_t> cap = lightCapIndices(mesh, lit, twoSided);
       indices.insert(indices.end(), cap.begin(), cap.end());
       v.lightCap = cap.size();
     }
