@@ -80,7 +80,7 @@ void silhouette(benchmark::State& state, const std::string& shape, const Size& s
 void faces(benchmark::State& state, const std::string& shape, const Size& size) {
   const PreparedCaster& c = caster(shape, size);
   for (auto _ : state) {
-    const std::vector<bool> lit = facesLight(c.mesh, light);
+    std::vector<bool> lit = facesLight(c.mesh, light);  // not const: DoNotOptimize takes a mutable lvalue
     benchmark::DoNotOptimize(lit);
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(c.mesh.triangleCount()));
@@ -130,6 +130,16 @@ bool closedLoops(const PreparedCaster& c) {
   return !edges.empty();
 }
 
+// Google Benchmark 1.8 replaced Run::error_occurred with Run::skipped; both are in use (Debian 12
+// has 1.7, Debian 13 has 1.9).
+template <typename R>
+bool failed(const R& run) {
+  if constexpr (requires { run.skipped; })
+    return static_cast<int>(run.skipped) != 0;
+  else
+    return run.error_occurred;
+}
+
 // Keeps each run's time per iteration for the table.
 class TableReporter : public benchmark::ConsoleReporter {
  public:
@@ -140,7 +150,7 @@ class TableReporter : public benchmark::ConsoleReporter {
 
   void ReportRuns(const std::vector<Run>& runs) override {
     for (const Run& run : runs) {
-      if (run.error_occurred || run.run_type != Run::RT_Iteration) continue;
+      if (failed(run) || run.run_type != Run::RT_Iteration) continue;
       Row& row = rows[run.benchmark_name()];
       row.ns = run.GetAdjustedCPUTime();  // nanoseconds; CPU time, as the machine may be shared
       row.triangles = run.counters.at("triangles").value;
