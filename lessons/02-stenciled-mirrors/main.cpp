@@ -67,6 +67,7 @@ LessonInfo lessonInfo() {
 
 constexpr GLint kTag = 1;   // a mirror's visible pixels while it is being reflected
 constexpr GLint kDone = 2;  // a reflection was drawn here: not the tag, so later mirrors skip it
+static_assert(kDone == kTag + 1, "the restore pass turns the tag into kDone with GL_INCR");
 
 // A rectangular one-sided mirror: its glass faces `normal`.
 struct Mirror {

@@ -334,7 +334,7 @@ class CutoutExtrusion final : public Lesson {
           volume_.set("transform", toClip * logoMatrix_);  // static geometry, one constant matrix
           prism_.draw();
           break;
-        default:
+        case kGpu:
           blend_.set("colour", colour);
           blend_.set("nearTransform", toClip);
           blend_.set("farTransform", toClip * extrusionToInfinity(logoLight_));
