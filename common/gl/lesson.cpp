@@ -136,8 +136,8 @@ void Session::checkNeeds(const std::vector<Feature>& needs, const std::string& w
 
 void Session::setVariant(const std::string& name, const std::vector<std::pair<std::string, int>>& settings) {
   checkNeeds(findVariant(info, name).needs, "variant '" + name + "'");
+  options = optionsFor(info, name, settings);
   variant = name;
-  options = optionsFor(info, variant, settings);
   camera = findVariant(info, name).camera.value_or(info.camera);
 }
 
@@ -349,7 +349,8 @@ int finishRun(Session& s, const Image& colour, const Image& stencil, const std::
 
 namespace {
 
-// Reads --scene's file before anything is made; its camera replaces the lesson's and the variants'.
+// Reads --scene's file before anything is made; its camera replaces the lesson's and the variants',
+// its lights bound the option that picks one (LessonInfo::sceneLightOption).
 Scene readScene(const CommandLine& cl, LessonInfo& info) {
   Scene scene;
   try {
@@ -363,6 +364,16 @@ Scene readScene(const CommandLine& cl, LessonInfo& info) {
     throw UsageError(cl.scene->string() + ": " + e.what());
   }
   for (Variant& v : info.variants) v.camera.reset();
+  if (!info.sceneLightOption.empty()) {
+    for (Option& o : info.options)
+      if (o.name == info.sceneLightOption) o.max = static_cast<int>(scene.lights.size()) - 1;
+    try {
+      optionsFor(info, cl.variant, cl.settings);
+    } catch (const UsageError& e) {
+      throw UsageError(std::string(e.what()) + " (" + cl.scene->string() + " has " +
+                       std::to_string(scene.lights.size()) + (scene.lights.size() == 1 ? " light)" : " lights)"));
+    }
+  }
   if (!cl.quiet)
     for (const SceneObject& o : scene.objects)
       for (const std::string& m : o.caster.report.messages)
