@@ -288,6 +288,26 @@ bool checkShadows(const Session& s, const Image& stencil) {
   return r.passed();
 }
 
+// A picture flag's file: a PNG name that can be written, and its raw sibling when it has one.
+void checkPictureOutput(const std::filesystem::path& path, const std::string& flag, bool rawBeside) {
+  checkOutputFile(path, flag);
+  if (path.extension() != ".png")
+    throw OutputError(flag + " " + path.string() + ": the file is written as PNG, so its name must end in .png");
+  if (rawBeside) checkOutputFile(rawPathBeside(path), flag + " (raw values beside it)");
+}
+
+// Every output the command line names, checked before a context is made or anything rendered.
+// Throws OutputError for the first that could not be written.
+void checkOutputs(const CommandLine& cl) {
+  if (cl.out) checkPictureOutput(*cl.out, "--out", false);
+  if (cl.stencilOut) checkPictureOutput(*cl.stencilOut, "--stencil-out", true);
+  if (cl.oracle) checkPictureOutput(*cl.oracle, "--oracle", true);
+  if (cl.passesDir) checkOutputFolder(*cl.passesDir, "--passes");
+  if (cl.maskOut) checkOutputFolder(*cl.maskOut, "--mask-out");
+  if (cl.golden && cl.updateGolden) checkOutputFolder(*cl.golden, "--golden");
+  if (cl.artifacts) checkOutputFolder(*cl.artifacts, "--artifacts");
+}
+
 Image stencilPicture(const CommandLine& cl, const Image& stencil) {
   return cl.stencilBitPlanes ? stencilBitPlanes(stencil) : stencilRamp(stencil);
 }
@@ -399,6 +419,7 @@ int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, 
       std::cout << variantList(lessonInfo);
       return 0;
     }
+    checkOutputs(cl);
     LessonInfo info = lessonInfo;
     std::optional<Scene> scene;
     if (cl.scene) scene = readScene(cl, info);

@@ -174,7 +174,10 @@ std::string helpText(const LessonInfo& info, const std::string& program, bool re
     out << "  --scene FILE             render the scene described in FILE (docs/scenes.md) from its\n"
         << "                           camera, instead of the lesson's own scene\n";
   out << "\n"
-      << "Output (of the last frame)\n"
+      << "Output (of the last frame). Every output is checked before anything is rendered: a path\n"
+      << "that cannot be written (a folder where a file belongs or a file where a folder does, a\n"
+      << "special file, a folder that cannot be made or written, a picture not named .png) is\n"
+      << "refused. Each file is written whole or not at all: beside its name, then renamed onto it.\n"
       << "  --out FILE.png           the colour image\n"
       << "  --stencil-out FILE.png   the stencil buffer as a picture with a legend; the raw values\n"
       << "                           go beside it as FILE.raw.png (one grey byte per pixel)\n"
