@@ -404,10 +404,8 @@ Scene readScene(const CommandLine& cl, LessonInfo& info) {
 int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, bool readsScenes, int argc,
                char** argv) {
   const std::string program = std::filesystem::path(argv[0]).filename().string();
-  bool golden = false;
   try {
     const CommandLine cl = parseCommandLine(lessonInfo, argc, argv);
-    golden = cl.golden.has_value();
     if (!readsScenes && (cl.scene || cl.maskOut))
       throw UsageError(std::string(cl.scene ? "--scene" : "--mask-out") + ": " + lessonInfo.id +
                        " draws only its own scene; the scene lessons read scene files");
@@ -427,13 +425,17 @@ int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, 
     setShaderDirFlag(cl.shaderDir);
     BackendChoice choice = chooseBackend(cl.backend, cl.headless);
     std::unique_ptr<Session> session;
-    try {
-      session = std::make_unique<Session>(info, make, cl, choice.backend);
-    } catch (const NoContextError& e) {
-      // The automatic choice falls back to EGL when OSMesa cannot make a context.
-      if (cl.backend || choice.backend != Backend::Osmesa) throw;
-      choice = {Backend::Egl, std::string("OSMesa failed (") + e.what() + ")"};
-      session = std::make_unique<Session>(info, make, cl, choice.backend);
+    while (!session) {
+      try {
+        session = std::make_unique<Session>(info, make, cl, choice.backend);
+      } catch (const NoContextError& e) {
+        // The automatic choice falls back from a display with no window to headless, and from
+        // OSMesa to EGL; a backend given with --backend has no fallback.
+        if (cl.backend || choice.backend == Backend::Egl) throw;
+        choice = choice.backend == Backend::Window
+                     ? headlessBackend(std::string("no window on the display (") + e.what() + ")")
+                     : BackendChoice{Backend::Egl, std::string("OSMesa failed (") + e.what() + ")"};
+      }
     }
     if (!cl.quiet) {
       const GlFeatures& f = session->context->features();
@@ -446,7 +448,7 @@ int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, 
     return 2;
   } catch (const NoContextError& e) {
     std::cerr << program << ": no OpenGL context: " << e.what() << "\n";
-    return golden ? 77 : 1;
+    return 77;
   } catch (const std::exception& e) {
     std::cerr << program << ": " << e.what() << "\n";
     return 1;
