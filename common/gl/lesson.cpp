@@ -200,6 +200,12 @@ std::string jsonNumber(const std::optional<std::uint64_t>& v) {
   return v ? std::to_string(*v) : "null";
 }
 
+// Where gpu_ms is null for a reason, the reason beside it.
+std::string gpuNullReason(const PassStats& p) {
+  if (p.gpuMs || p.gpuMsNullReason.empty()) return "";
+  return ", \"gpu_ms_null_reason\": \"" + p.gpuMsNullReason + "\"";
+}
+
 std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
   const auto& passes = s.recorder->passStats();
   std::ostringstream out;
@@ -220,7 +226,8 @@ std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
     out << "    {\"name\": \"" << p.name << "\", \"draw_calls\": " << p.drawCalls
         << ", \"triangles\": " << p.triangles << ", \"samples_passed\": " << jsonNumber(p.samplesPassed)
         << ", \"primitives_submitted\": " << jsonNumber(p.primitivesSubmitted)
-        << ", \"gpu_ms\": " << jsonNumber(p.gpuMs) << ", \"cpu_ms\": " << jsonNumber(p.cpuMs) << "}"
+        << ", \"gpu_ms\": " << jsonNumber(p.gpuMs) << gpuNullReason(p) << ", \"cpu_ms\": " << jsonNumber(p.cpuMs)
+        << "}"
         << (i + 1 < passes.size() ? "," : "") << "\n";
     total.drawCalls += p.drawCalls;
     total.triangles += p.triangles;
@@ -234,7 +241,10 @@ std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
   }
   if (!haveSamples) total.samplesPassed.reset();
   if (!havePrims) total.primitivesSubmitted.reset();
-  if (!haveGpu) total.gpuMs.reset();
+  if (!haveGpu) {
+    total.gpuMs.reset();
+    total.gpuMsNullReason = "a pass's gpu_ms is null";
+  }
   // The first frame pays for shader compilation (llvmpipe compiles at first draw), so the
   // steady-state figures leave it out when there are more frames.
   const auto steadyBegin = frameMs.size() > 1 ? frameMs.begin() + 1 : frameMs.begin();
@@ -243,7 +253,8 @@ std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
   out << "  ],\n  \"total\": {\"passes\": " << passes.size() << ", \"draw_calls\": " << total.drawCalls
       << ", \"triangles\": " << total.triangles << ", \"samples_passed\": " << jsonNumber(total.samplesPassed)
       << ", \"primitives_submitted\": " << jsonNumber(total.primitivesSubmitted)
-      << ", \"gpu_ms\": " << jsonNumber(total.gpuMs) << ", \"cpu_ms\": " << jsonNumber(total.cpuMs) << "},\n"
+      << ", \"gpu_ms\": " << jsonNumber(total.gpuMs) << gpuNullReason(total) << ", \"cpu_ms\": " << jsonNumber(total.cpuMs)
+      << "},\n"
       << "  \"counts\": {";
   const auto& counts = s.recorder->counts();
   for (size_t i = 0; i < counts.size(); ++i)

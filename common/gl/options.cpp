@@ -185,7 +185,9 @@ std::string helpText(const LessonInfo& info, const std::string& program, bool re
       << "  --passes DIR             colour and stencil after each named pass\n"
       << "  --stats                  JSON on stdout: per pass draw calls, triangles, fragments\n"
       << "                           passed, primitives, GPU and CPU time (null where the driver\n"
-      << "                           has no query for it), the lesson's own counts\n"
+      << "                           has no query for it; a GPU time null where it cannot be right,\n"
+      << "                           longer than the pass's CPU time or from a timer without bits,\n"
+      << "                           with gpu_ms_null_reason), the lesson's own counts\n"
       << "  --quiet                  no context line on stderr\n";
   if (readsScenes)
     out << "  --mask-out DIR           each light's shadow mask as DIR/light-<i>.png (i from 0): the\n"
