@@ -1,15 +1,31 @@
-# Runs COMMAND and passes when it exits with 2 and prints exactly one line matching EXPECT.
-# A run that cannot make a GL context at all (77) is passed on as skipped.
-execute_process(COMMAND ${COMMAND} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+# Runs COMMAND in WORKDIR, made fresh and empty, and passes when it exits with EXIT (default 2),
+# prints exactly one line matching EXPECT, and writes nothing: WORKDIR stays empty and no path in
+# ABSENT exists afterwards. Where EXIT is 2, a run that cannot make a GL context at all (77) is
+# passed on as skipped.
+if(NOT DEFINED EXIT)
+  set(EXIT 2)
+endif()
+if(NOT WORKDIR)
+  message(FATAL_ERROR "expect_error.cmake needs WORKDIR")
+endif()
+file(REMOVE_RECURSE "${WORKDIR}")
+file(MAKE_DIRECTORY "${WORKDIR}")
+foreach(path IN LISTS ABSENT)
+  if(EXISTS "${path}" OR IS_SYMLINK "${path}")
+    message(FATAL_ERROR "${path} exists before the run; the test cannot tell whether the run wrote it")
+  endif()
+endforeach()
+execute_process(COMMAND ${COMMAND} WORKING_DIRECTORY "${WORKDIR}" RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                ERROR_VARIABLE err)
 set(all "${out}${err}")
 string(STRIP "${all}" all)
 message("exit ${rc}: ${all}")
-if(rc EQUAL 77)
+if(rc EQUAL 77 AND NOT EXIT EQUAL 77)
   message("no GL context: skipped")  # matched by the test's SKIP_REGULAR_EXPRESSION
   return()
 endif()
-if(NOT rc EQUAL 2)
-  message(FATAL_ERROR "expected exit code 2, got ${rc}")
+if(NOT rc EQUAL EXIT)
+  message(FATAL_ERROR "expected exit code ${EXIT}, got ${rc}")
 endif()
 string(FIND "${all}" "\n" newline)
 if(NOT newline EQUAL -1)
@@ -18,3 +34,12 @@ endif()
 if(NOT all MATCHES "${EXPECT}")
   message(FATAL_ERROR "expected the line to match '${EXPECT}'")
 endif()
+file(GLOB written LIST_DIRECTORIES true "${WORKDIR}/*")  # hidden files too
+if(written)
+  message(FATAL_ERROR "expected nothing written, found: ${written}")
+endif()
+foreach(path IN LISTS ABSENT)
+  if(EXISTS "${path}" OR IS_SYMLINK "${path}")
+    message(FATAL_ERROR "expected nothing written, found ${path}")
+  endif()
+endforeach()

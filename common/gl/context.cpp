@@ -78,7 +78,10 @@ BackendChoice chooseBackend(std::optional<Backend> requested, bool headless) {
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
   bool display = (x11 && *x11) || (wayland && *wayland);
   if (!headless && display) return {Backend::Window, "a display is available"};
-  std::string why = headless ? "--headless" : "no display";
+  return headlessBackend(headless ? "--headless" : "no display");
+}
+
+BackendChoice headlessBackend(const std::string& why) {
   if (osmesaAvailable())
     return {Backend::Osmesa,
             why + "; OSMesa is the deterministic software default (--backend egl for a GPU)"};

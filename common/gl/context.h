@@ -55,7 +55,10 @@ struct BackendChoice {
 
 // A flag wins; else a window when a display exists and --headless is not given; else
 // OSMesa (deterministic) where built in, else EGL.
+// runLesson falls back to headlessBackend when the display opens no window.
 BackendChoice chooseBackend(std::optional<Backend> requested, bool headless);
+// The headless backend, OSMesa where built in, else EGL; `why` starts its reason.
+BackendChoice headlessBackend(const std::string& why);
 
 // Backend constructors, one per file.
 std::unique_ptr<Context> createOsmesaContext(int width, int height);

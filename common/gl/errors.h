@@ -11,7 +11,13 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// No GL context could be created at all. Golden tests report this as skipped (77).
+// An output file or folder that cannot be written: the message names the path and the
+// system's reason. Bad input too, so exit code 2.
+struct OutputError : UsageError {
+  using UsageError::UsageError;
+};
+
+// No GL context could be created at all. Exit code 77, which golden tests report as skipped.
 struct NoContextError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };

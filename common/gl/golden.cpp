@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 #include "gl/stencil_view.h"
@@ -106,7 +105,6 @@ GoldenResult checkGolden(const Image& colour, const Image& stencil, const std::f
       << c.maxChannelDiff << ", allowed " << tolerance.maxFraction * 100 << "%";
   if (passed) return {true, msg.str()};
 
-  std::filesystem::create_directories(artifacts);
   writePng(artifacts / "colour-actual.png", colour);
   writePng(artifacts / "colour-expected.png", expectedColour);
   writePng(artifacts / "colour-diff.png", c.picture);
@@ -114,7 +112,7 @@ GoldenResult checkGolden(const Image& colour, const Image& stencil, const std::f
   writePng(artifacts / "stencil-expected.png", stencilRamp(expectedStencil));
   writePng(artifacts / "stencil-diff.png", s.picture);
   writePng(artifacts / "stencil-actual.raw.png", stencil);
-  std::ofstream json(artifacts / "summary.json");
+  std::ostringstream json;
   json << "{\n  \"golden\": \"" << colourPath.string() << "\",\n"
        << "  \"passed\": false,\n"
        << "  \"stencil_pixels_differing\": " << s.differing << ",\n"
@@ -125,6 +123,7 @@ GoldenResult checkGolden(const Image& colour, const Image& stencil, const std::f
        << "  \"tolerance\": {\"max_channel_diff\": " << tolerance.maxChannelDiff
        << ", \"max_fraction\": " << tolerance.maxFraction << "},\n"
        << "  \"pixels\": " << s.pixels << "\n}\n";
+  writeFile(artifacts / "summary.json", json.str());
   return {false, msg.str() + "; images and summary.json in " + artifacts.string()};
 }
 

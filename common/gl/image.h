@@ -1,7 +1,10 @@
-// 8-bit images in memory, rows top to bottom, and PNG files (stb).
+// 8-bit images in memory, rows top to bottom, and PNG files (stb); output files written
+// all or nothing.
 #pragma once
 #include <cstdint>
 #include <filesystem>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace stencil {
@@ -19,9 +22,22 @@ struct Image {
   }
 };
 
-// Writes a PNG, creating parent folders. Throws std::runtime_error on failure.
+// Writes a PNG with writeFile. Throws OutputError (gl/errors.h) on failure.
 void writePng(const std::filesystem::path&, const Image&);
 // Reads a PNG with the given channel count (1 or 4). Throws std::runtime_error on failure.
 Image readPng(const std::filesystem::path&, int channels);
+
+// Writes `bytes` to `path` all or nothing, creating parent folders: into a temporary file beside
+// it, every write and the close checked, then renamed onto it. Throws OutputError naming the path
+// and the system's reason, the temporary removed.
+void writeFile(const std::filesystem::path&, std::string_view bytes);
+
+// Checks, without writing anything that stays, that writeFile could write a file at `path`: a
+// name, not an existing folder or special file, in a folder that exists or can be made and
+// takes new files. Throws OutputError "FLAG PATH: why".
+void checkOutputFile(const std::filesystem::path&, const std::string& flag);
+// The same for a folder that files will be written into: a folder or nothing there yet, in
+// which new files can be made.
+void checkOutputFolder(const std::filesystem::path&, const std::string& flag);
 
 }  // namespace stencil

@@ -136,8 +136,8 @@ void Session::checkNeeds(const std::vector<Feature>& needs, const std::string& w
 
 void Session::setVariant(const std::string& name, const std::vector<std::pair<std::string, int>>& settings) {
   checkNeeds(findVariant(info, name).needs, "variant '" + name + "'");
+  options = optionsFor(info, name, settings);
   variant = name;
-  options = optionsFor(info, variant, settings);
   camera = findVariant(info, name).camera.value_or(info.camera);
 }
 
@@ -200,6 +200,12 @@ std::string jsonNumber(const std::optional<std::uint64_t>& v) {
   return v ? std::to_string(*v) : "null";
 }
 
+// Where gpu_ms is null for a reason, the reason beside it.
+std::string gpuNullReason(const PassStats& p) {
+  if (p.gpuMs || p.gpuMsNullReason.empty()) return "";
+  return ", \"gpu_ms_null_reason\": \"" + p.gpuMsNullReason + "\"";
+}
+
 std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
   const auto& passes = s.recorder->passStats();
   std::ostringstream out;
@@ -220,7 +226,8 @@ std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
     out << "    {\"name\": \"" << p.name << "\", \"draw_calls\": " << p.drawCalls
         << ", \"triangles\": " << p.triangles << ", \"samples_passed\": " << jsonNumber(p.samplesPassed)
         << ", \"primitives_submitted\": " << jsonNumber(p.primitivesSubmitted)
-        << ", \"gpu_ms\": " << jsonNumber(p.gpuMs) << ", \"cpu_ms\": " << jsonNumber(p.cpuMs) << "}"
+        << ", \"gpu_ms\": " << jsonNumber(p.gpuMs) << gpuNullReason(p) << ", \"cpu_ms\": " << jsonNumber(p.cpuMs)
+        << "}"
         << (i + 1 < passes.size() ? "," : "") << "\n";
     total.drawCalls += p.drawCalls;
     total.triangles += p.triangles;
@@ -234,7 +241,10 @@ std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
   }
   if (!haveSamples) total.samplesPassed.reset();
   if (!havePrims) total.primitivesSubmitted.reset();
-  if (!haveGpu) total.gpuMs.reset();
+  if (!haveGpu) {
+    total.gpuMs.reset();
+    total.gpuMsNullReason = "a pass's gpu_ms is null";
+  }
   // The first frame pays for shader compilation (llvmpipe compiles at first draw), so the
   // steady-state figures leave it out when there are more frames.
   const auto steadyBegin = frameMs.size() > 1 ? frameMs.begin() + 1 : frameMs.begin();
@@ -243,7 +253,8 @@ std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
   out << "  ],\n  \"total\": {\"passes\": " << passes.size() << ", \"draw_calls\": " << total.drawCalls
       << ", \"triangles\": " << total.triangles << ", \"samples_passed\": " << jsonNumber(total.samplesPassed)
       << ", \"primitives_submitted\": " << jsonNumber(total.primitivesSubmitted)
-      << ", \"gpu_ms\": " << jsonNumber(total.gpuMs) << ", \"cpu_ms\": " << jsonNumber(total.cpuMs) << "},\n"
+      << ", \"gpu_ms\": " << jsonNumber(total.gpuMs) << gpuNullReason(total) << ", \"cpu_ms\": " << jsonNumber(total.cpuMs)
+      << "},\n"
       << "  \"counts\": {";
   const auto& counts = s.recorder->counts();
   for (size_t i = 0; i < counts.size(); ++i)
@@ -286,6 +297,26 @@ bool checkShadows(const Session& s, const Image& stencil) {
             << r.shadowedPixels << " shadowed; " << r.disagreements << " disagree, " << r.onEdges
             << " of them on edges (picture: " << s.commandLine.oracle->string() << ")\n";
   return r.passed();
+}
+
+// A picture flag's file: a PNG name that can be written, and its raw sibling when it has one.
+void checkPictureOutput(const std::filesystem::path& path, const std::string& flag, bool rawBeside) {
+  checkOutputFile(path, flag);
+  if (path.extension() != ".png")
+    throw OutputError(flag + " " + path.string() + ": the file is written as PNG, so its name must end in .png");
+  if (rawBeside) checkOutputFile(rawPathBeside(path), flag + " (raw values beside it)");
+}
+
+// Every output the command line names, checked before a context is made or anything rendered.
+// Throws OutputError for the first that could not be written.
+void checkOutputs(const CommandLine& cl) {
+  if (cl.out) checkPictureOutput(*cl.out, "--out", false);
+  if (cl.stencilOut) checkPictureOutput(*cl.stencilOut, "--stencil-out", true);
+  if (cl.oracle) checkPictureOutput(*cl.oracle, "--oracle", true);
+  if (cl.passesDir) checkOutputFolder(*cl.passesDir, "--passes");
+  if (cl.maskOut) checkOutputFolder(*cl.maskOut, "--mask-out");
+  if (cl.golden && cl.updateGolden) checkOutputFolder(*cl.golden, "--golden");
+  if (cl.artifacts) checkOutputFolder(*cl.artifacts, "--artifacts");
 }
 
 Image stencilPicture(const CommandLine& cl, const Image& stencil) {
@@ -349,7 +380,8 @@ int finishRun(Session& s, const Image& colour, const Image& stencil, const std::
 
 namespace {
 
-// Reads --scene's file before anything is made; its camera replaces the lesson's and the variants'.
+// Reads --scene's file before anything is made; its camera replaces the lesson's and the variants',
+// its lights bound the option that picks one (LessonInfo::sceneLightOption).
 Scene readScene(const CommandLine& cl, LessonInfo& info) {
   Scene scene;
   try {
@@ -363,6 +395,16 @@ Scene readScene(const CommandLine& cl, LessonInfo& info) {
     throw UsageError(cl.scene->string() + ": " + e.what());
   }
   for (Variant& v : info.variants) v.camera.reset();
+  if (!info.sceneLightOption.empty()) {
+    for (Option& o : info.options)
+      if (o.name == info.sceneLightOption) o.max = static_cast<int>(scene.lights.size()) - 1;
+    try {
+      optionsFor(info, cl.variant, cl.settings);
+    } catch (const UsageError& e) {
+      throw UsageError(std::string(e.what()) + " (" + cl.scene->string() + " has " +
+                       std::to_string(scene.lights.size()) + (scene.lights.size() == 1 ? " light)" : " lights)"));
+    }
+  }
   if (!cl.quiet)
     for (const SceneObject& o : scene.objects)
       for (const std::string& m : o.caster.report.messages)
@@ -373,10 +415,8 @@ Scene readScene(const CommandLine& cl, LessonInfo& info) {
 int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, bool readsScenes, int argc,
                char** argv) {
   const std::string program = std::filesystem::path(argv[0]).filename().string();
-  bool golden = false;
   try {
     const CommandLine cl = parseCommandLine(lessonInfo, argc, argv);
-    golden = cl.golden.has_value();
     if (!readsScenes && (cl.scene || cl.maskOut))
       throw UsageError(std::string(cl.scene ? "--scene" : "--mask-out") + ": " + lessonInfo.id +
                        " draws only its own scene; the scene lessons read scene files");
@@ -388,6 +428,7 @@ int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, 
       std::cout << variantList(lessonInfo);
       return 0;
     }
+    checkOutputs(cl);
     LessonInfo info = lessonInfo;
     std::optional<Scene> scene;
     if (cl.scene) scene = readScene(cl, info);
@@ -395,13 +436,17 @@ int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, 
     setShaderDirFlag(cl.shaderDir);
     BackendChoice choice = chooseBackend(cl.backend, cl.headless);
     std::unique_ptr<Session> session;
-    try {
-      session = std::make_unique<Session>(info, make, cl, choice.backend);
-    } catch (const NoContextError& e) {
-      // The automatic choice falls back to EGL when OSMesa cannot make a context.
-      if (cl.backend || choice.backend != Backend::Osmesa) throw;
-      choice = {Backend::Egl, std::string("OSMesa failed (") + e.what() + ")"};
-      session = std::make_unique<Session>(info, make, cl, choice.backend);
+    while (!session) {
+      try {
+        session = std::make_unique<Session>(info, make, cl, choice.backend);
+      } catch (const NoContextError& e) {
+        // The automatic choice falls back from a display with no window to headless, and from
+        // OSMesa to EGL; a backend given with --backend has no fallback.
+        if (cl.backend || choice.backend == Backend::Egl) throw;
+        choice = choice.backend == Backend::Window
+                     ? headlessBackend(std::string("no window on the display (") + e.what() + ")")
+                     : BackendChoice{Backend::Egl, std::string("OSMesa failed (") + e.what() + ")"};
+      }
     }
     if (!cl.quiet) {
       const GlFeatures& f = session->context->features();
@@ -414,7 +459,7 @@ int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, 
     return 2;
   } catch (const NoContextError& e) {
     std::cerr << program << ": no OpenGL context: " << e.what() << "\n";
-    return golden ? 77 : 1;
+    return 77;
   } catch (const std::exception& e) {
     std::cerr << program << ": " << e.what() << "\n";
     return 1;

@@ -21,13 +21,15 @@
 namespace stencil {
 
 // A classroom toggle: an integer the lesson reads each frame, cycled by a key in the window.
-// max == 1 makes it an on/off switch.
+// Its range min..max is declared here and nowhere else: --help prints it, and a variant's
+// setting or --set outside it is refused. 0..1 makes it an on/off switch.
 struct Option {
   std::string name;
   char key;
   std::string help;
   int value = 0;
   int max = 1;
+  int min = 0;
 };
 
 enum class Feature { DepthBoundsTest, PipelineStatistics, ClipControl, DepthClamp, KhrDebug };
@@ -74,6 +76,10 @@ struct LessonInfo {
   std::vector<Variant> variants;  // the first is the default
   std::vector<std::string> passes;
   OrbitCamera camera;
+  // The option, if any, that picks one of the scene's lights by its index (the light drawn last).
+  // With --scene FILE its max becomes the file's light count - 1, before the options are checked,
+  // so a light the file does not have is refused.
+  std::string sceneLightOption;
 };
 
 class PassRecorder;

@@ -1,7 +1,10 @@
 #include "gl/options.h"
 
 #include <charconv>
+#include <cmath>
 #include <sstream>
+#include <stdexcept>
+#include <type_traits>
 
 #include "gl/errors.h"
 
@@ -14,7 +17,13 @@ T parseNumber(const std::string& flag, const std::string& text) {
   const char* end = text.data() + text.size();
   auto [ptr, ec] = std::from_chars(text.data(), end, value);
   if (ec != std::errc() || ptr != end) throw UsageError(flag + " expects a number, got '" + text + "'");
+  if constexpr (std::is_floating_point_v<T>)
+    if (!std::isfinite(value)) throw UsageError(flag + " expects a finite number, got '" + text + "'");
   return value;
+}
+
+std::string optionRange(const Option& o) {
+  return std::to_string(o.min) + ".." + std::to_string(o.max);
 }
 
 }  // namespace
@@ -29,12 +38,15 @@ const Variant& findVariant(const LessonInfo& info, const std::string& name) {
 std::vector<Option> optionsFor(const LessonInfo& info, const std::string& variant,
                                const std::vector<std::pair<std::string, int>>& settings) {
   std::vector<Option> options = info.options;
+  for (const Option& o : options)
+    if (o.value < o.min || o.value > o.max)
+      throw std::logic_error("option '" + o.name + "' defaults to " + std::to_string(o.value) +
+                             ", outside its range " + optionRange(o));
   auto apply = [&](const std::string& name, int value) {
     for (Option& o : options)
       if (o.name == name) {
-        if (value < 0 || value > o.max)
-          throw UsageError("option '" + name + "' takes 0.." + std::to_string(o.max) + ", got " +
-                           std::to_string(value));
+        if (value < o.min || value > o.max)
+          throw UsageError("option '" + name + "' takes " + optionRange(o) + ", got " + std::to_string(value));
         o.value = value;
         return;
       }
@@ -71,8 +83,12 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
       cl.height = parseNumber<int>("--size", s.substr(x + 1));
       if (cl.width < 1 || cl.height < 1 || cl.width > 8192 || cl.height > 8192)
         throw UsageError("--size must be between 1x1 and 8192x8192, got '" + s + "'");
-    } else if (flag == "--time")
-      cl.time = parseNumber<double>(flag, value());
+    } else if (flag == "--time") {
+      const std::string t = value();
+      cl.time = parseNumber<double>(flag, t);
+      if (std::abs(cl.time) > kMaxTime)
+        throw UsageError("--time must be within -1e6..1e6 seconds, got '" + t + "'");
+    }
     else if (flag == "--frames") {
       cl.frames = parseNumber<int>(flag, value());
       if (*cl.frames < 1) throw UsageError("--frames must be at least 1");
@@ -118,6 +134,8 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
     else
       throw UsageError("unknown flag '" + flag + "'; --help shows the flags");
   }
+  if (cl.frames && std::abs(cl.time + (*cl.frames - 1) / 60.0) > kMaxTime)
+    throw UsageError("--frames " + std::to_string(*cl.frames) + " from --time run past 1e6 seconds");
   if (cl.updateGolden && !cl.golden) throw UsageError("--update-golden needs --golden DIR");
   if (cl.headless && cl.backend == Backend::Window)
     throw UsageError("--headless contradicts --backend window");
@@ -138,14 +156,15 @@ std::string helpText(const LessonInfo& info, const std::string& program, bool re
       << "usage: " << program << " [flags]\n\n"
       << "Context\n"
       << "  --headless               render off-screen even when a display exists\n"
-      << "  --backend NAME           osmesa | egl | window (default: window if a display exists,\n"
-      << "                           else osmesa where built in, else egl)\n"
+      << "  --backend NAME           osmesa | egl | window (default: window if a display exists and\n"
+      << "                           opens one, else osmesa where built in, else egl)\n"
       << "  --size WxH               framebuffer size (default 640x480)\n"
       << "  --shader-dir DIR         look for shaders here instead of the source tree\n"
       << "                           ($STENCIL_SHADER_DIR does the same; the flag wins)\n"
       << "  --stencil-bits 8|0       0 builds a framebuffer without stencil, to see the check refuse it\n\n"
       << "What to render\n"
-      << "  --time T                 seconds into the animation (default 0)\n"
+      << "  --time T                 seconds into the animation (default 0), a finite number within\n"
+      << "                           -1e6..1e6: beyond that float animation loses its precision\n"
       << "  --frames N               render N frames, 1/60 s apart (default 1 headless; a window\n"
       << "                           runs until closed)\n"
       << "  --variant NAME           a named configuration (default: the first)\n"
@@ -155,7 +174,10 @@ std::string helpText(const LessonInfo& info, const std::string& program, bool re
     out << "  --scene FILE             render the scene described in FILE (docs/scenes.md) from its\n"
         << "                           camera, instead of the lesson's own scene\n";
   out << "\n"
-      << "Output (of the last frame)\n"
+      << "Output (of the last frame). Every output is checked before anything is rendered: a path\n"
+      << "that cannot be written (a folder where a file belongs or a file where a folder does, a\n"
+      << "special file, a folder that cannot be made or written, a picture not named .png) is\n"
+      << "refused. Each file is written whole or not at all: beside its name, then renamed onto it.\n"
       << "  --out FILE.png           the colour image\n"
       << "  --stencil-out FILE.png   the stencil buffer as a picture with a legend; the raw values\n"
       << "                           go beside it as FILE.raw.png (one grey byte per pixel)\n"
@@ -163,7 +185,9 @@ std::string helpText(const LessonInfo& info, const std::string& program, bool re
       << "  --passes DIR             colour and stencil after each named pass\n"
       << "  --stats                  JSON on stdout: per pass draw calls, triangles, fragments\n"
       << "                           passed, primitives, GPU and CPU time (null where the driver\n"
-      << "                           has no query for it), the lesson's own counts\n"
+      << "                           has no query for it; a GPU time null where it cannot be right,\n"
+      << "                           longer than the pass's CPU time or from a timer without bits,\n"
+      << "                           with gpu_ms_null_reason), the lesson's own counts\n"
       << "  --quiet                  no context line on stderr\n";
   if (readsScenes)
     out << "  --mask-out DIR           each light's shadow mask as DIR/light-<i>.png (i from 0): the\n"
@@ -186,12 +210,14 @@ std::string helpText(const LessonInfo& info, const std::string& program, bool re
   if (!info.options.empty()) {
     out << "\nOptions (--set NAME=VALUE, or the key in the window)\n";
     for (const Option& o : info.options)
-      out << "  " << o.name << " [" << o.key << "] 0.." << o.max << " (default " << o.value << ")  " << o.help
+      out << "  " << o.name << " [" << o.key << "] " << optionRange(o) << " (default " << o.value << ")  " << o.help
+          << (readsScenes && o.name == info.sceneLightOption ? "; with --scene, one of the file's lights" : "")
           << "\n";
   }
   out << "\nVariants\n";
   for (const Variant& v : info.variants) out << "  " << v.name << "  " << v.help << "\n";
-  out << "\nExit codes: 0 ok, 1 rendering failed or a golden differs, 2 bad input, 77 no GL context.\n";
+  out << "\nExit codes: 0 ok, 1 rendering failed or a golden differs, 2 bad input (one line, nothing\n"
+      << "written), 77 no GL context (one line).\n";
   return out.str();
 }
 

@@ -10,13 +10,17 @@
 
 namespace stencil {
 
+// --time's bound in seconds, either way. A float (what the shaders and the animation use) steps by
+// 1/16 s at 1e6 s, enough for a still frame; beyond it animations visibly break down.
+constexpr double kMaxTime = 1e6;
+
 struct CommandLine {
   bool help = false;
   bool listVariants = false;
   bool headless = false;
   std::optional<Backend> backend;
   int width = 640, height = 480;
-  double time = 0.0;
+  double time = 0.0;                          // finite, |time| <= kMaxTime
   std::optional<int> frames;  // headless: 1 unless given; window: until closed unless given
   std::string variant;        // empty: the lesson's first
   std::vector<std::pair<std::string, int>> settings;  // --set NAME=VALUE

@@ -29,7 +29,17 @@ PassRecorder::PassRecorder(std::vector<std::string> declaredPasses, const Frameb
                            const GlFeatures& features)
     : declared_(std::move(declaredPasses)),
       framebuffer_(framebuffer),
-      pipelineStatistics_(features.pipelineStatistics) {}
+      pipelineStatistics_(features.pipelineStatistics) {
+  GLint bits = 0;
+  glGetQueryiv(GL_TIME_ELAPSED, GL_QUERY_COUNTER_BITS, &bits);
+  timerCounts_ = bits > 0;
+  // Mesa binds a framebuffer in the driver only at the first clear or draw into it. A timer query
+  // begun before the driver has any framebuffer is binned into no tile, so it never records its
+  // start, and llvmpipe then reports the end timestamp alone: the time since boot. Clearing the
+  // new framebuffer once binds it before any query begins.
+  framebuffer_.bind();
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+}
 
 PassRecorder::~PassRecorder() {
   for (auto& q : queries_) {
@@ -112,7 +122,16 @@ void PassRecorder::endFrame() {
   if (!request_.measure) return;
   for (std::size_t i = 0; i < stats_.size(); ++i) {
     stats_[i].samplesPassed = queryResult(queries_[i].samples);
-    stats_[i].gpuMs = static_cast<double>(queryResult(queries_[i].time)) / 1e6;
+    const double gpuMs = static_cast<double>(queryResult(queries_[i].time)) / 1e6;
+    // The pass's CPU time runs from before its query began to after glFinish: no GPU time fits
+    // in it that is longer.
+    if (!timerCounts_)
+      stats_[i].gpuMsNullReason = "the driver's timer query has no counter bits (GL_QUERY_COUNTER_BITS is 0)";
+    else if (gpuMs > stats_[i].cpuMs)
+      stats_[i].gpuMsNullReason = "the timer query measured " + std::to_string(gpuMs) +
+                                  " ms, longer than the pass's CPU wall time";
+    else
+      stats_[i].gpuMs = gpuMs;
     if (queries_[i].primitives) stats_[i].primitivesSubmitted = queryResult(queries_[i].primitives);
   }
 }

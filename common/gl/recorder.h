@@ -23,7 +23,8 @@ struct PassStats {
   std::uint64_t triangles = 0;                       // counted on the CPU at each draw
   std::optional<std::uint64_t> samplesPassed;        // occlusion query: fragments that passed
   std::optional<std::uint64_t> primitivesSubmitted;  // ARB_pipeline_statistics_query, if present
-  std::optional<double> gpuMs;                       // timer query
+  std::optional<double> gpuMs;                       // timer query; empty when it cannot be right
+  std::string gpuMsNullReason;                       // why gpuMs is empty, when it was measured
   double cpuMs = 0;
 };
 
@@ -63,6 +64,7 @@ class PassRecorder {
   std::vector<std::string> declared_;
   const Framebuffer& framebuffer_;
   bool pipelineStatistics_;
+  bool timerCounts_ = false;  // the driver's timer query has counter bits: it can time
   FrameRequest request_;
   std::vector<PassStats> stats_;
   std::vector<Queries> queries_;  // one set per pass of the frame, reused across frames

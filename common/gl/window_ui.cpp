@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "gl/errors.h"
 #include "gl/session.h"
 #include "gl/stencil_view.h"
 
@@ -36,6 +37,16 @@ WindowState& stateOf(GLFWwindow* w) {
   return *static_cast<WindowState*>(glfwGetWindowUserPointer(w));
 }
 
+// A variant this run cannot show (a feature the context lacks, a light the scene file does not
+// have) is said in one line, and the window keeps the variant it shows.
+void switchVariant(Session& s, const std::string& name) {
+  try {
+    s.setVariant(name);
+  } catch (const UsageError& e) {
+    std::cerr << "variant '" << name << "': " << e.what() << "\n";
+  }
+}
+
 void onKey(GLFWwindow* w, int key, int, int action, int mods) {
   if (action != GLFW_PRESS || ImGui::GetIO().WantCaptureKeyboard) return;
   WindowState& st = stateOf(w);
@@ -54,13 +65,14 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
     case GLFW_KEY_V: {
       const auto& vs = s.info.variants;
       auto it = std::find_if(vs.begin(), vs.end(), [&](const Variant& v) { return v.name == s.variant; });
-      s.setVariant(std::next(it) == vs.end() ? vs.front().name : std::next(it)->name);
+      switchVariant(s, std::next(it) == vs.end() ? vs.front().name : std::next(it)->name);
       return;
     }
     default: break;
   }
   for (Option& o : s.options)
-    if (std::toupper(static_cast<unsigned char>(o.key)) == key) o.value = (o.value + 1) % (o.max + 1);
+    if (std::toupper(static_cast<unsigned char>(o.key)) == key)
+      o.value = o.value >= o.max ? o.min : o.value + 1;
 }
 
 void onMouseButton(GLFWwindow* w, int button, int action, int) {
@@ -131,16 +143,16 @@ void drawPanel(WindowState& st, double fps) {
   ImGui::TextUnformatted(s.info.title.c_str());
   if (ImGui::BeginCombo("variant [V]", s.variant.c_str())) {
     for (const Variant& v : s.info.variants)
-      if (ImGui::Selectable(v.name.c_str(), v.name == s.variant)) s.setVariant(v.name);
+      if (ImGui::Selectable(v.name.c_str(), v.name == s.variant)) switchVariant(s, v.name);
     ImGui::EndCombo();
   }
   for (Option& o : s.options) {
     const std::string label = o.name + " [" + o.key + "]";
-    if (o.max == 1) {
+    if (o.min == 0 && o.max == 1) {
       bool on = o.value != 0;
       if (ImGui::Checkbox(label.c_str(), &on)) o.value = on ? 1 : 0;
     } else {
-      ImGui::SliderInt(label.c_str(), &o.value, 0, o.max);
+      ImGui::SliderInt(label.c_str(), &o.value, o.min, o.max);
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", o.help.c_str());
   }

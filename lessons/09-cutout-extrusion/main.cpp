@@ -56,11 +56,11 @@ LessonInfo lessonInfo() {
        0, 4},
       {"distance", 'X', "CPU extrusion distance in tenths (0: to infinity, w = 0)", 0, 60},
       {"logo", 'O', "the cut-out (a window lattice) above the scene", 1},
-      {"holes", 'N', "holes per row of the lattice (at least 1)", 3, 16},
+      {"holes", 'N', "holes per row of the lattice", 3, 16, 1},
       {"teapot", 'T',
        "the teapot's own shadow: 0 none, 1 flattened into a cut-out silhouette, 2 planar (figure 14)", 0, 2},
       {"sphere", 'Y', "a sphere instead of the teapot", 0},
-      {"slices", 'I', "the sphere's slices, at least 3 (stacks: half as many)", 24, 256},
+      {"slices", 'I', "the sphere's slices (stacks: half as many)", 24, 256, 3},
       {"analytic", 'A', "--oracle judges against the true sphere, not its mesh", 0},
       {"volumes", 'W', "draw the shadow volumes translucently", 0},
       {"shadow", 'H', "shadows at all (off: everything lit)", 1},
@@ -268,7 +268,7 @@ class CutoutExtrusion final : public Lesson {
   // Everything that depends on the options (the lattice, the sphere) is made when they change;
   // everything that depends on the light is made here each frame.
   void prepare(const Frame& f) {
-    const int holes = std::max(1, f.option("holes"));  // the option starts at 0
+    const int holes = f.option("holes");
     if (!logo_ || holes != logoHoles_) {
       logoHoles_ = holes;
       const std::vector<std::string> rows = latticeRows(holes);
@@ -280,7 +280,7 @@ class CutoutExtrusion final : public Lesson {
       doubled_.upload(doubledVertexVolume(
           logo_->welded, silhouetteEdges(logo_->adjacency, facesLight(logo_->welded, fromAbove))));
     }
-    const int slices = std::max(3, f.option("slices"));  // the fewest a sphere can have
+    const int slices = f.option("slices");
     if (!sphere_ || slices != sphereSlices_) {
       sphereSlices_ = slices;
       sphere_ = std::make_unique<Caster>(makeSphere(kSphereRadius, slices, std::max(2, slices / 2)));

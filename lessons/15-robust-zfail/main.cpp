@@ -159,6 +159,7 @@ LessonInfo lessonInfo() {
       {"coloured-lights", "three coloured lights added over the ambient pass", {}},
       {"show-volumes", "the volumes translucently, the silhouettes as lines", {{"show", 1}}},
   };
+  info.sceneLightOption = "last";
   info.passes = {"ambient", "volumes", "lit", "show-volumes", "silhouettes"};
   info.camera = pinfCamera();
   return info;

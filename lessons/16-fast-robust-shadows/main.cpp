@@ -104,7 +104,7 @@ LessonInfo lessonInfo() {
        kManyLights - 1},
       {"many", 'N', "thirty-two dim point lights in a ring instead of the scene's four", 0},
       {"float", 'F', "accumulate light in an RGBA16F target (off: RGBA8, which bands)", 1},
-      {"slices", 'Y', "the sphere's slices, at least 4 (stacks: half as many)", 24, 256},
+      {"slices", 'Y', "the sphere's slices (stacks: half as many)", 24, 256, 4},
       {"light-cap", 'C', "draw the light cap of case-3 casters", 1},
       {"split", 'G', "split dark-cap fan triangles that span 180 degrees or more", 1},
       {"bounds", 'B', "cull casters and scissor by the light's bounds", 1},
@@ -162,6 +162,7 @@ LessonInfo lessonInfo() {
        "the same accumulated in RGBA8: each light rounded, bands",
        {{"many", 1}, {"float", 0}}},
   };
+  info.sceneLightOption = "light";
   info.passes = {"ambient", "shadows", "volume-fill", "illumination", "overlay"};
   return info;
 }
@@ -491,10 +492,10 @@ class FastRobustShadows final : public Lesson {
   // The built-in scene follows the options that shape it.
   void prepare(const Frame& f) {
     if (fromFile_) return;
-    const int key = std::max(4, f.option("slices")) * 4 + f.option("many") * 2 + f.option("moving");
+    const int key = f.option("slices") * 4 + f.option("many") * 2 + f.option("moving");
     if (key == sceneKey_) return;
     sceneKey_ = key;
-    setScene(builtInScene(std::max(4, f.option("slices")), f.on("many"), f.on("moving")));
+    setScene(builtInScene(f.option("slices"), f.on("many"), f.on("moving")));
   }
 
   // Every light once, the chosen one last.

@@ -77,6 +77,10 @@ TEST(CommandLine, BadInputThrowsUsageError) {
                                              {"--size", "640"},
                                              {"--size", "0x10"},
                                              {"--time", "soon"},
+                                             {"--time", "nan"},
+                                             {"--time", "inf"},
+                                             {"--time", "1e300"},
+                                             {"--time", "999999", "--frames", "120"},
                                              {"--frames", "0"},
                                              {"--backend", "vulkan"},
                                              {"--variant", "nope"},
@@ -88,6 +92,15 @@ TEST(CommandLine, BadInputThrowsUsageError) {
                                              {"--headless", "--backend", "window"},
                                              {"--out"}})
     EXPECT_THROW(parse(args), UsageError) << args.front();
+}
+
+TEST(CommandLine, OptionsTakeTheirDeclaredRange) {
+  LessonInfo i = info();
+  i.options.push_back({"slices", 'S', "at least 4", 24, 256, 4});
+  EXPECT_EQ(optionsFor(i, "", {{"slices", 4}}).back().value, 4);
+  EXPECT_THROW(optionsFor(i, "", {{"slices", 3}}), UsageError);
+  EXPECT_THROW(optionsFor(i, "", {{"slices", 257}}), UsageError);
+  EXPECT_NE(helpText(i, "lesson").find("slices [S] 4..256"), std::string::npos);
 }
 
 TEST(CommandLine, VariantSettingsThenSetOverrides) {
