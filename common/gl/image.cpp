@@ -75,7 +75,8 @@ void writeFile(const fs::path& path, std::string_view bytes) {
   std::FILE* file = std::fopen(temporary.c_str(), "wb");
   if (!file) cannotWrite(path, std::strerror(errno));
   int error = 0;
-  if (std::fwrite(bytes.data(), 1, bytes.size(), file) != bytes.size() || std::fflush(file) != 0) error = errno;
+  if (std::fwrite(bytes.data(), 1, bytes.size(), file) != bytes.size() || std::fflush(file) != 0)
+    error = errno;
   if (std::fclose(file) != 0 && error == 0) error = errno;
   if (error == 0 && std::rename(temporary.c_str(), path.c_str()) != 0) error = errno;
   if (error != 0) {
@@ -87,7 +88,8 @@ void writeFile(const fs::path& path, std::string_view bytes) {
 void writePng(const fs::path& path, const Image& image) {
   std::string png;
   const auto append = [](void* context, void* data, int size) {
-    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                               static_cast<std::size_t>(size));
   };
   if (!stbi_write_png_to_func(append, &png, image.width, image.height, image.channels, image.pixels.data(),
                               image.width * image.channels))

@@ -226,9 +226,8 @@ std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
     out << "    {\"name\": \"" << p.name << "\", \"draw_calls\": " << p.drawCalls
         << ", \"triangles\": " << p.triangles << ", \"samples_passed\": " << jsonNumber(p.samplesPassed)
         << ", \"primitives_submitted\": " << jsonNumber(p.primitivesSubmitted)
-        << ", \"gpu_ms\": " << jsonNumber(p.gpuMs) << gpuNullReason(p) << ", \"cpu_ms\": " << jsonNumber(p.cpuMs)
-        << "}"
-        << (i + 1 < passes.size() ? "," : "") << "\n";
+        << ", \"gpu_ms\": " << jsonNumber(p.gpuMs) << gpuNullReason(p)
+        << ", \"cpu_ms\": " << jsonNumber(p.cpuMs) << "}" << (i + 1 < passes.size() ? "," : "") << "\n";
     total.drawCalls += p.drawCalls;
     total.triangles += p.triangles;
     haveSamples &= p.samplesPassed.has_value();
@@ -253,8 +252,8 @@ std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
   out << "  ],\n  \"total\": {\"passes\": " << passes.size() << ", \"draw_calls\": " << total.drawCalls
       << ", \"triangles\": " << total.triangles << ", \"samples_passed\": " << jsonNumber(total.samplesPassed)
       << ", \"primitives_submitted\": " << jsonNumber(total.primitivesSubmitted)
-      << ", \"gpu_ms\": " << jsonNumber(total.gpuMs) << gpuNullReason(total) << ", \"cpu_ms\": " << jsonNumber(total.cpuMs)
-      << "},\n"
+      << ", \"gpu_ms\": " << jsonNumber(total.gpuMs) << gpuNullReason(total)
+      << ", \"cpu_ms\": " << jsonNumber(total.cpuMs) << "},\n"
       << "  \"counts\": {";
   const auto& counts = s.recorder->counts();
   for (size_t i = 0; i < counts.size(); ++i)
@@ -303,7 +302,8 @@ bool checkShadows(const Session& s, const Image& stencil) {
 void checkPictureOutput(const std::filesystem::path& path, const std::string& flag, bool rawBeside) {
   checkOutputFile(path, flag);
   if (path.extension() != ".png")
-    throw OutputError(flag + " " + path.string() + ": the file is written as PNG, so its name must end in .png");
+    throw OutputError(flag + " " + path.string() +
+                      ": the file is written as PNG, so its name must end in .png");
   if (rawBeside) checkOutputFile(rawPathBeside(path), flag + " (raw values beside it)");
 }
 
@@ -402,7 +402,8 @@ Scene readScene(const CommandLine& cl, LessonInfo& info) {
       optionsFor(info, cl.variant, cl.settings);
     } catch (const UsageError& e) {
       throw UsageError(std::string(e.what()) + " (" + cl.scene->string() + " has " +
-                       std::to_string(scene.lights.size()) + (scene.lights.size() == 1 ? " light)" : " lights)"));
+                       std::to_string(scene.lights.size()) +
+                       (scene.lights.size() == 1 ? " light)" : " lights)"));
     }
   }
   if (!cl.quiet)

@@ -46,7 +46,8 @@ std::vector<Option> optionsFor(const LessonInfo& info, const std::string& varian
     for (Option& o : options)
       if (o.name == name) {
         if (value < o.min || value > o.max)
-          throw UsageError("option '" + name + "' takes " + optionRange(o) + ", got " + std::to_string(value));
+          throw UsageError("option '" + name + "' takes " + optionRange(o) + ", got " +
+                           std::to_string(value));
         o.value = value;
         return;
       }
@@ -88,8 +89,7 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
       cl.time = parseNumber<double>(flag, t);
       if (std::abs(cl.time) > kMaxTime)
         throw UsageError("--time must be within -1e6..1e6 seconds, got '" + t + "'");
-    }
-    else if (flag == "--frames") {
+    } else if (flag == "--frames") {
       cl.frames = parseNumber<int>(flag, value());
       if (*cl.frames < 1) throw UsageError("--frames must be at least 1");
     } else if (flag == "--variant")
@@ -210,8 +210,10 @@ std::string helpText(const LessonInfo& info, const std::string& program, bool re
   if (!info.options.empty()) {
     out << "\nOptions (--set NAME=VALUE, or the key in the window)\n";
     for (const Option& o : info.options)
-      out << "  " << o.name << " [" << o.key << "] " << optionRange(o) << " (default " << o.value << ")  " << o.help
-          << (readsScenes && o.name == info.sceneLightOption ? "; with --scene, one of the file's lights" : "")
+      out << "  " << o.name << " [" << o.key << "] " << optionRange(o) << " (default " << o.value << ")  "
+          << o.help
+          << (readsScenes && o.name == info.sceneLightOption ? "; with --scene, one of the file's lights"
+                                                             : "")
           << "\n";
   }
   out << "\nVariants\n";

@@ -20,7 +20,7 @@ struct CommandLine {
   bool headless = false;
   std::optional<Backend> backend;
   int width = 640, height = 480;
-  double time = 0.0;                          // finite, |time| <= kMaxTime
+  double time = 0.0;          // finite, |time| <= kMaxTime
   std::optional<int> frames;  // headless: 1 unless given; window: until closed unless given
   std::string variant;        // empty: the lesson's first
   std::vector<std::pair<std::string, int>> settings;  // --set NAME=VALUE

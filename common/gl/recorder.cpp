@@ -128,8 +128,8 @@ void PassRecorder::endFrame() {
     if (!timerCounts_)
       stats_[i].gpuMsNullReason = "the driver's timer query has no counter bits (GL_QUERY_COUNTER_BITS is 0)";
     else if (gpuMs > stats_[i].cpuMs)
-      stats_[i].gpuMsNullReason = "the timer query measured " + std::to_string(gpuMs) +
-                                  " ms, longer than the pass's CPU wall time";
+      stats_[i].gpuMsNullReason =
+          "the timer query measured " + std::to_string(gpuMs) + " ms, longer than the pass's CPU wall time";
     else
       stats_[i].gpuMs = gpuMs;
     if (queries_[i].primitives) stats_[i].primitivesSubmitted = queryResult(queries_[i].primitives);
