@@ -3,6 +3,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <cstdlib>
 #include <string>
 
 #include "gl/context.h"
@@ -17,6 +18,15 @@ class WindowContext final : public Context {
  public:
   WindowContext(int width, int height, const std::string& title) {
     glfwSetErrorCallback([](int, const char* message) { lastGlfwError = message; });
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    const char* x11 = std::getenv("DISPLAY");
+    const bool hasWayland = wayland && *wayland, hasX11 = x11 && *x11;
+    if (!hasWayland && !hasX11)
+      throw NoContextError("no display: neither DISPLAY nor WAYLAND_DISPLAY is set");
+#ifdef GLFW_PLATFORM
+    // GLFW 3.4 tries Wayland first, and libwayland prints a line of its own where there is none.
+    if (!hasWayland) glfwInitHint(GLFW_PLATFORM, GLFW_PLATFORM_X11);
+#endif
     if (!glfwInit()) throw NoContextError("GLFW could not start: " + lastGlfwError);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
@@ -35,8 +45,12 @@ class WindowContext final : public Context {
     glfwDestroyWindow(window_);
     glfwTerminate();
   }
-  Backend backend() const override { return Backend::Window; }
-  GLFWwindow* window() override { return window_; }
+  Backend backend() const override {
+    return Backend::Window;
+  }
+  GLFWwindow* window() override {
+    return window_;
+  }
 
  private:
   GLFWwindow* window_ = nullptr;
