@@ -1,4 +1,5 @@
-# Runs COMMAND and passes when it exits with 2 and prints exactly one line matching EXPECT.
+# Runs COMMAND and passes when it exits with 2 and prints exactly one line, printable ASCII,
+# matching EXPECT.
 # A run that cannot make a GL context at all (77) is passed on as skipped.
 execute_process(COMMAND ${COMMAND} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 set(all "${out}${err}")
@@ -14,6 +15,9 @@ endif()
 string(FIND "${all}" "\n" newline)
 if(NOT newline EQUAL -1)
   message(FATAL_ERROR "expected one line of output")
+endif()
+if(all MATCHES "[^ -~]")
+  message(FATAL_ERROR "expected printable ASCII only")
 endif()
 if(NOT all MATCHES "${EXPECT}")
   message(FATAL_ERROR "expected the line to match '${EXPECT}'")
