@@ -157,6 +157,14 @@ glm::mat4 SceneObject::modelAt(double time) const {
 
 namespace {
 
+// A line's words: what is between spaces, tabs and the other white space.
+std::vector<std::string> words(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string w; in >> w;) out.push_back(w);
+  return out;
+}
+
 // Calls visit(number, line) for each line of OBJ text as tinyobjloader splits it: at \n, \r\n
 // or \r, numbered from 1. A line is passed as a std::string, so a NUL in it ends what C
 // functions read of it, as it does for tinyobjloader.
@@ -176,6 +184,22 @@ void forEachObjLine(std::string_view text, Visit visit) {
 bool isStatement(const char* line, const char* keyword) {
   const std::size_t n = std::strlen(keyword);
   return std::strncmp(line, keyword, n) == 0 && (line[n] == ' ' || line[n] == '\t');
+}
+
+// Whether a word holds a number whose exponent has more than 4 digits, leading zeros aside
+// (floats reach only 1e38 and 1e-45). tinyobjloader's number reader overflows an int on some of
+// them (an exponent of 2147483648), so they are refused before it reads them.
+bool absurdExponent(std::string_view word) {
+  for (std::size_t i = 1; i < word.size(); ++i) {
+    if (word[i] != 'e' && word[i] != 'E') continue;
+    std::size_t j = i + 1;
+    if (j < word.size() && (word[j] == '+' || word[j] == '-')) ++j;
+    while (j < word.size() && word[j] == '0') ++j;
+    std::size_t digits = 0;
+    for (; j < word.size() && word[j] >= '0' && word[j] <= '9'; ++j) ++digits;
+    if (digits > 4) return true;
+  }
+  return false;
 }
 
 struct ObjCounts {
@@ -232,18 +256,30 @@ std::size_t checkFace(const char* p, const ObjCounts& sofar, const ObjCounts& to
   return corners;
 }
 
-// What the pre-scan learnt: where the file's v and vn lines are, for messages about them.
+// What the pre-scan learnt: the text tinyobjloader is to read, and where the file's v and vn
+// lines are, for messages about them.
 struct ObjLines {
+  std::string text;  // the v, vt, vn and f lines; every other line left empty
   std::vector<std::size_t> positions, normals;
 };
 
-// Reads the text as tinyobjloader will, checking what it does not: every face index in range
-// and no more than kMaxSceneTriangles triangles. Throws SceneError "NAME:LINE: ...".
+// Reads the text as tinyobjloader will, checking what it does not: every face index in range,
+// no absurd exponents, no more than kMaxSceneTriangles triangles. Only the statements the
+// lessons use are passed on: tinyobjloader's other statements (skin weights, tags, materials)
+// have nothing to give them and have bugs of their own. Throws SceneError "NAME:LINE: ...".
 ObjLines prescanObj(std::string_view text, const std::string& name) {
   ObjCounts total;
   ObjLines lines;
   forEachObjLine(text, [&](std::size_t number, const std::string& line) {
     const char* p = line.c_str() + std::strspn(line.c_str(), " \t");
+    const bool vertexData = isStatement(p, "v") || isStatement(p, "vt") || isStatement(p, "vn");
+    if (vertexData || isStatement(p, "f")) lines.text += line;
+    lines.text += '\n';
+    if (vertexData)
+      for (const std::string& word : words(p))
+        if (absurdExponent(word))
+          throw SceneError(name + ":" + std::to_string(number) + ": the number " + quote(word) +
+                           " has an exponent of more than 4 digits");
     if (isStatement(p, "v")) {
       ++total.positions;
       lines.positions.push_back(number);
@@ -300,8 +336,7 @@ ObjMesh parseObj(std::string_view text, const std::string& name) {
   config.triangulate = true;
   config.vertex_color = false;
   tinyobj::ObjReader reader;
-  // From memory: an mtllib line reads no file.
-  if (!reader.ParseFromString(std::string(text), "", config)) {
+  if (!reader.ParseFromString(lines.text, "", config)) {
     const std::string error = reader.Error();
     throw SceneError(name + ": " + error.substr(0, error.find_first_of("\r\n")));
   }
@@ -690,13 +725,6 @@ void readObjectLine(LineReader& line, SceneObject& object) {
     line.fail("unknown object setting " + quote(key) +
               "; expected translate, rotate, scale, color, casts, receives, spin or bob");
   line.end();
-}
-
-std::vector<std::string> words(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string w; in >> w;) out.push_back(w);
-  return out;
 }
 
 }  // namespace

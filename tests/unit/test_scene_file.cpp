@@ -433,6 +433,36 @@ TEST(SceneFileObj, EveryBadIndexIsRefusedWithItsLine) {
   }
 }
 
+// Found by tests/fuzz (regressions/obj_fuzzer/exponent-overflow.obj): an exponent of ten
+// digits overflowed an int in tinyobjloader's number reader. Such numbers are refused first.
+TEST(SceneFileObj, ANumberWithAnAbsurdExponentIsRefused) {
+  EXPECT_EQ(objErrorOf("# vhv\n 3ert u\x8bth v\nv 0e-2147483648990erom \xa3(\n"),
+            "m.obj:3: the number '0e-2147483648990erom' has an exponent of more than 4 digits");
+  EXPECT_EQ(objErrorOf("v 0 0 0\nv 1 0 0\nvt 1E+000099999 0\nv 0 1 0\nf 1 2 3\n"),
+            "m.obj:3: the number '1E+000099999' has an exponent of more than 4 digits");
+  EXPECT_EQ(objErrorOf("v 0 0 0\nv 1 0 0\nv 0 1 1e9999\nf 1 2 3\n"), "m.obj:3: vertex 3 is not finite");
+  const ObjMesh m = parseObj("v 0 0 0\nv 1e-0001 0 0\nv 0 1E+0000 1e-9999\nf 1 2 3\n", "m.obj");
+  EXPECT_EQ(m.shared.positions[1], glm::vec3(0.1f, 0, 0));
+  EXPECT_EQ(m.shared.positions[2], glm::vec3(0, 1, 0));
+}
+
+// Found by tests/fuzz (regressions/obj_fuzzer/skin-weight-nan-joint.obj): tinyobjloader converts
+// a skin weight's joint (a vw line) to int even when it is not a number. Only the v, vt, vn and
+// f lines reach it; the rest, groups and materials included, change nothing of the mesh.
+TEST(SceneFileObj, OnlyVerticesAndFacesReachTheReader) {
+  const std::string tet = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+  const ObjMesh plain = parseObj(tet + "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n", "m.obj");
+  const ObjMesh extras = parseObj(
+      "mtllib ../../../../etc/passwd\no thing\n" + tet +
+          "vw 1 0e999 1\nvw 2 1e30 1\nt crease 2/1/0 1 2 nan\ng one\nusemtl x\ns 1\nf 1 3 2\nf 1 2 4\n"
+          "l 1 2\np 3\ng two\nf 1 4 3\nf 2 3 4\n",
+      "m.obj");
+  EXPECT_EQ(extras.drawn.positions, plain.drawn.positions);
+  EXPECT_EQ(extras.drawn.normals, plain.drawn.normals);
+  EXPECT_EQ(extras.drawn.indices, plain.drawn.indices);
+  EXPECT_EQ(extras.shared.indices, plain.shared.indices);
+}
+
 TEST(SceneFileObj, AnOpenBoxIsKeptWithItsBorderEdgesReported) {
   const Scene s = withMesh("open-box.obj");
   const SceneObject& m = s.objects[0];
