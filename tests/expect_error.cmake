@@ -1,6 +1,6 @@
 # Runs COMMAND in WORKDIR, made fresh and empty, and passes when it exits with EXIT (default 2),
-# prints exactly one line matching EXPECT, and writes nothing: WORKDIR stays empty and no path in
-# ABSENT exists afterwards. Where EXIT is 2, a run that cannot make a GL context at all (77) is
+# prints exactly one line of printable ASCII matching EXPECT, and writes nothing: WORKDIR stays
+# empty and no path in ABSENT exists afterwards. Where EXIT is 2, a run that cannot make a GL context at all (77) is
 # passed on as skipped.
 if(NOT DEFINED EXIT)
   set(EXIT 2)
@@ -30,6 +30,9 @@ endif()
 string(FIND "${all}" "\n" newline)
 if(NOT newline EQUAL -1)
   message(FATAL_ERROR "expected one line of output")
+endif()
+if(all MATCHES "[^ -~]")
+  message(FATAL_ERROR "expected printable ASCII only")
 endif()
 if(NOT all MATCHES "${EXPECT}")
   message(FATAL_ERROR "expected the line to match '${EXPECT}'")

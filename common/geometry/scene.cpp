@@ -3,8 +3,12 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
+#include <climits>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <map>
@@ -31,7 +35,54 @@ std::string plural(std::size_t n, const char* what) {
   return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
 }
 
+// The text with every byte that is not printable ASCII written as \xNN: messages quote the
+// files, which may hold anything.
+std::string printable(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte < 0x7f) {
+      out += c;
+    } else {
+      static const char hex[] = "0123456789abcdef";
+      out += {'\\', 'x', hex[byte >> 4], hex[byte & 15]};
+    }
+  }
+  return out;
+}
+
+// A word from a file as a message quotes it: in single quotes, at most 40 characters of it.
+std::string quote(std::string_view word) {
+  constexpr std::size_t most = 40;
+  return "'" + printable(word.substr(0, most)) + (word.size() > most ? "...'" : "'");
+}
+
+// The whole text of a regular file of at most maxBytes bytes. Throws std::runtime_error with the
+// reason, without the path.
+std::string readFile(const std::filesystem::path& path, std::uintmax_t maxBytes) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (status.type() == fs::file_type::not_found) throw std::runtime_error("no such file");
+  if (ec) throw std::runtime_error(ec.message());
+  if (status.type() == fs::file_type::directory) throw std::runtime_error("it is a directory");
+  if (status.type() != fs::file_type::regular) throw std::runtime_error("it is not a regular file");
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec) throw std::runtime_error(ec.message());
+  if (size > maxBytes)
+    throw std::runtime_error("it is " + std::to_string(size) + " bytes; at most " + std::to_string(maxBytes) +
+                             " are read");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("it cannot be opened");
+  std::string text(static_cast<std::size_t>(size), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(size));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return text;
+}
+
 }  // namespace
+
+SceneError::SceneError(const std::string& message) : std::runtime_error(printable(message)) {}
 
 PreparedCaster prepareCaster(const Mesh& mesh) {
   validateMesh(mesh);
@@ -102,6 +153,273 @@ glm::mat4 SceneObject::modelAt(double time) const {
   return m;
 }
 
+// ---- OBJ files ------------------------------------------------------------------------------
+
+namespace {
+
+// A line's words: what is between spaces, tabs and the other white space.
+std::vector<std::string> words(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string w; in >> w;) out.push_back(w);
+  return out;
+}
+
+// Calls visit(number, line) for each line of OBJ text as tinyobjloader splits it: at \n, \r\n
+// or \r, numbered from 1. A line is passed as a std::string, so a NUL in it ends what C
+// functions read of it, as it does for tinyobjloader.
+template <class Visit>
+void forEachObjLine(std::string_view text, Visit visit) {
+  std::size_t number = 0, start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find_first_of("\r\n", start);
+    if (end == std::string_view::npos) end = text.size();
+    visit(++number, std::string(text.substr(start, end - start)));
+    start = end + (text.compare(end, 2, "\r\n") == 0 ? 2 : 1);
+  }
+}
+
+// A line's statement as tinyobjloader tells them apart: after leading spaces and tabs, the
+// keyword and a space or tab.
+bool isStatement(const char* line, const char* keyword) {
+  const std::size_t n = std::strlen(keyword);
+  return std::strncmp(line, keyword, n) == 0 && (line[n] == ' ' || line[n] == '\t');
+}
+
+// Whether a word holds a number whose exponent has more than 4 digits, leading zeros aside
+// (floats reach only 1e38 and 1e-45). tinyobjloader's number reader overflows an int on some of
+// them (an exponent of 2147483648), so they are refused before it reads them.
+bool absurdExponent(std::string_view word) {
+  for (std::size_t i = 1; i < word.size(); ++i) {
+    if (word[i] != 'e' && word[i] != 'E') continue;
+    std::size_t j = i + 1;
+    if (j < word.size() && (word[j] == '+' || word[j] == '-')) ++j;
+    while (j < word.size() && word[j] == '0') ++j;
+    std::size_t digits = 0;
+    for (; j < word.size() && word[j] >= '0' && word[j] <= '9'; ++j) ++digits;
+    if (digits > 4) return true;
+  }
+  return false;
+}
+
+struct ObjCounts {
+  long long positions = 0, texcoords = 0, normals = 0;
+};
+
+// Checks one `f` line's corners (v, v/t, v//n or v/t/n each), read the way tinyobjloader's
+// parseTriple reads them, against the counts so far (relative indices) and in the whole file.
+// Returns the number of corners.
+std::size_t checkFace(const char* p, const ObjCounts& sofar, const ObjCounts& total,
+                      const std::function<void(const std::string&)>& fail) {
+  const auto index = [&](const char*& q, const std::string& kind, long long before, long long all) {
+    char* end = nullptr;
+    errno = 0;
+    const long long value = std::strtoll(q, &end, 10);
+    if (end == q)
+      fail("expected a " + kind + " index, got " + quote(std::string_view(q, std::strcspn(q, " \t/"))));
+    if (errno == ERANGE || value > INT_MAX || value < INT_MIN) {
+      const std::string_view written(q, static_cast<std::size_t>(end - q));
+      fail(kind + " index " + quote(written.substr(written.find_first_not_of(" \t\v\f"))) + " is too large");
+    }
+    if (value == 0) fail(kind + " index 0: OBJ counts from 1");
+    if (value > all)
+      fail(kind + " index " + std::to_string(value) + " is past the file's " + std::to_string(all) + " " +
+           (all == 1           ? kind
+            : kind == "vertex" ? "vertices"
+                               : kind + "s"));
+    if (value < 0 && -value > before)
+      fail(kind + " index " + std::to_string(value) + " counts back past the first " + kind + ": " +
+           std::to_string(before) + " defined above it");
+    q = end + std::strcspn(end, "/ \t\r");
+  };
+  std::size_t corners = 0;
+  p += std::strspn(p, " \t");
+  while (*p != '\0' && *p != '\r' && *p != '\n') {
+    index(p, "vertex", sofar.positions, total.positions);
+    if (*p == '/') {
+      ++p;
+      if (*p == '/') {
+        ++p;
+        index(p, "normal", sofar.normals, total.normals);
+      } else {
+        index(p, "texture coordinate", sofar.texcoords, total.texcoords);
+        if (*p == '/') {
+          ++p;
+          index(p, "normal", sofar.normals, total.normals);
+        }
+      }
+    }
+    p += std::strspn(p, " \t\r");
+    if (++corners > kMaxObjFaceCorners)
+      fail("a face of more than " + std::to_string(kMaxObjFaceCorners) + " corners");
+  }
+  return corners;
+}
+
+// What the pre-scan learnt: the text tinyobjloader is to read, and where the file's v and vn
+// lines are, for messages about them.
+struct ObjLines {
+  std::string text;  // the v, vt, vn and f lines; every other line left empty
+  std::vector<std::size_t> positions, normals;
+};
+
+// Reads the text as tinyobjloader will, checking what it does not: every face index in range,
+// no absurd exponents, no more than kMaxSceneTriangles triangles. Only the statements the
+// lessons use are passed on: tinyobjloader's other statements (skin weights, tags, materials)
+// have nothing to give them and have bugs of their own. Throws SceneError "NAME:LINE: ...".
+ObjLines prescanObj(std::string_view text, const std::string& name) {
+  ObjCounts total;
+  ObjLines lines;
+  forEachObjLine(text, [&](std::size_t number, const std::string& line) {
+    const char* p = line.c_str() + std::strspn(line.c_str(), " \t");
+    const bool vertexData = isStatement(p, "v") || isStatement(p, "vt") || isStatement(p, "vn");
+    if (vertexData || isStatement(p, "f")) lines.text += line;
+    lines.text += '\n';
+    if (vertexData)
+      for (const std::string& word : words(p))
+        if (absurdExponent(word))
+          throw SceneError(name + ":" + std::to_string(number) + ": the number " + quote(word) +
+                           " has an exponent of more than 4 digits");
+    if (isStatement(p, "v")) {
+      ++total.positions;
+      lines.positions.push_back(number);
+    } else if (isStatement(p, "vt")) {
+      ++total.texcoords;
+    } else if (isStatement(p, "vn")) {
+      ++total.normals;
+      lines.normals.push_back(number);
+    }
+  });
+  ObjCounts sofar;
+  std::size_t triangles = 0;
+  forEachObjLine(text, [&](std::size_t number, const std::string& line) {
+    const auto fail = [&](const std::string& message) {
+      throw SceneError(name + ":" + std::to_string(number) + ": " + message);
+    };
+    const char* p = line.c_str() + std::strspn(line.c_str(), " \t");
+    if (isStatement(p, "v")) {
+      ++sofar.positions;
+    } else if (isStatement(p, "vt")) {
+      ++sofar.texcoords;
+    } else if (isStatement(p, "vn")) {
+      ++sofar.normals;
+    } else if (isStatement(p, "f")) {
+      const std::size_t corners = checkFace(p + 2, sofar, total, fail);
+      if (corners >= 3) triangles += corners - 2;
+      if (triangles > kMaxSceneTriangles)
+        fail("more than " + std::to_string(kMaxSceneTriangles) + " triangles, the most a scene holds");
+    }
+  });
+  return lines;
+}
+
+glm::vec3 vec3At(const std::vector<tinyobj::real_t>& values, int index) {
+  const auto i = static_cast<std::size_t>(index);
+  return {values[3 * i], values[3 * i + 1], values[3 * i + 2]};
+}
+
+// A unit normal in the direction of n, or +y where n has none (a zero-area triangle draws
+// nothing; any unit normal keeps the arrays finite).
+glm::vec3 unitOr(const glm::vec3& n) {
+  const float length = glm::length(n);
+  if (length > 0.0f && std::isfinite(length)) return glm::normalize(n);
+  const glm::dvec3 d(n);  // too long for a float's length
+  const double dLength = glm::length(d);
+  return dLength > 0.0 ? glm::vec3(d / dLength) : glm::vec3(0, 1, 0);
+}
+
+}  // namespace
+
+ObjMesh parseObj(std::string_view text, const std::string& name) {
+  const ObjLines lines = prescanObj(text, name);
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = true;
+  config.vertex_color = false;
+  tinyobj::ObjReader reader;
+  if (!reader.ParseFromString(lines.text, "", config)) {
+    const std::string error = reader.Error();
+    throw SceneError(name + ": " + error.substr(0, error.find_first_of("\r\n")));
+  }
+  const tinyobj::attrib_t& attrib = reader.GetAttrib();
+  const auto checkCoordinates = [&](const std::vector<tinyobj::real_t>& values,
+                                    const std::vector<std::size_t>& lineOf, const char* what, float limit) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (std::isfinite(values[i]) && std::abs(values[i]) <= limit) continue;
+      const std::size_t line = i / 3 < lineOf.size() ? lineOf[i / 3] : 0;
+      throw SceneError(name + ":" + std::to_string(line) + ": " + what + " " + std::to_string(i / 3 + 1) +
+                       (std::isfinite(values[i])
+                            ? " has a coordinate beyond +-" + std::to_string(static_cast<long>(limit))
+                            : " is not finite"));
+    }
+  };
+  checkCoordinates(attrib.vertices, lines.positions, "vertex", kMaxObjCoordinate);
+  checkCoordinates(attrib.normals, lines.normals, "normal", std::numeric_limits<float>::infinity());
+
+  // The pre-scan checked every index; these are checked again, cheaply, in case the two readings
+  // of the text ever differ.
+  const auto inRange = [](int i, std::size_t count, bool optional) {
+    return (optional && i == -1) || (i >= 0 && static_cast<std::size_t>(i) < count);
+  };
+  bool allNormals = true;
+  std::size_t corners = 0;
+  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    if (shape.mesh.indices.size() % 3 != 0) throw SceneError(name + ": a face that did not triangulate");
+    for (const tinyobj::index_t& i : shape.mesh.indices) {
+      if (!inRange(i.vertex_index, attrib.vertices.size() / 3, false) ||
+          !inRange(i.normal_index, attrib.normals.size() / 3, true) ||
+          !inRange(i.texcoord_index, attrib.texcoords.size() / 2, true))
+        throw SceneError(name + ": a face index out of range");
+      allNormals &= i.normal_index >= 0;
+      ++corners;
+    }
+  }
+  if (corners == 0) throw SceneError(name + ": no faces");
+  if (corners / 3 > kMaxSceneTriangles)
+    throw SceneError(name + ": more than " + std::to_string(kMaxSceneTriangles) +
+                     " triangles, the most a scene holds");
+
+  ObjMesh result;
+  Mesh& drawn = result.drawn;
+  Mesh& shared = result.shared;
+  std::map<int, std::uint32_t> sharedOf;  // file position -> shared vertex
+  for (const tinyobj::shape_t& shape : reader.GetShapes())
+    for (const tinyobj::index_t& i : shape.mesh.indices) {
+      const auto [it, added] =
+          sharedOf.emplace(i.vertex_index, static_cast<std::uint32_t>(shared.positions.size()));
+      if (added) shared.positions.push_back(vec3At(attrib.vertices, i.vertex_index));
+      shared.indices.push_back(it->second);
+    }
+  if (allNormals) {
+    std::map<std::pair<int, int>, std::uint32_t> vertexOf;  // (position, normal) -> vertex
+    for (const tinyobj::shape_t& shape : reader.GetShapes())
+      for (const tinyobj::index_t& i : shape.mesh.indices) {
+        const auto [it, added] = vertexOf.emplace(std::pair(i.vertex_index, i.normal_index),
+                                                  static_cast<std::uint32_t>(drawn.positions.size()));
+        if (added) {
+          drawn.positions.push_back(vec3At(attrib.vertices, i.vertex_index));
+          drawn.normals.push_back(unitOr(vec3At(attrib.normals, i.normal_index)));
+        }
+        drawn.indices.push_back(it->second);
+      }
+  } else {
+    for (std::size_t c = 0; c < shared.indices.size(); c += 3) {
+      const glm::vec3 a = shared.positions[shared.indices[c]], b = shared.positions[shared.indices[c + 1]],
+                      d = shared.positions[shared.indices[c + 2]];
+      const glm::vec3 normal = unitOr(glm::cross(b - a, d - a));
+      for (const glm::vec3& p : {a, b, d}) {
+        drawn.indices.push_back(static_cast<std::uint32_t>(drawn.positions.size()));
+        drawn.positions.push_back(p);
+        drawn.normals.push_back(normal);
+      }
+    }
+  }
+  return result;
+}
+
+std::string readObjFile(const std::filesystem::path& path) {
+  return readFile(path, kMaxObjFileBytes);
+}
+
 // ---- scene files (docs/scenes.md) ----------------------------------------------------------
 
 namespace {
@@ -125,7 +443,7 @@ class LineReader {
     float value = 0.0f;
     const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), value);
     if (ec != std::errc() || end != w.data() + w.size() || !std::isfinite(value))
-      fail("expected " + what + " (a finite number), got '" + w + "'");
+      fail("expected " + what + " (a finite number), got " + quote(w));
     return value;
   }
   float positive(const std::string& what) {
@@ -152,10 +470,10 @@ class LineReader {
     const std::string w = word(what + " (yes or no)");
     if (w == "yes") return true;
     if (w == "no") return false;
-    fail("expected " + what + " (yes or no), got '" + w + "'");
+    fail("expected " + what + " (yes or no), got " + quote(w));
   }
   void end() const {
-    if (!done()) fail("unexpected '" + words_[next_] + "' at the end of the line");
+    if (!done()) fail("unexpected " + quote(words_[next_]) + " at the end of the line");
   }
   static std::string format(float v) {
     std::ostringstream out;
@@ -178,10 +496,10 @@ class ShapeParams {
       if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
         std::string list;
         for (const std::string& k : keys) list += (list.empty() ? "" : ", ") + k;
-        line.fail("unknown parameter '" + key + "' for " + shape + "; expected " +
+        line.fail("unknown parameter " + quote(key) + " for " + shape + "; expected " +
                   (list.empty() ? std::string("none") : list));
       }
-      if (!seen_.insert(key).second) line.fail("parameter '" + key + "' given twice");
+      if (!seen_.insert(key).second) line.fail("parameter " + quote(key) + " given twice");
       values_[key] = numbers(line);
     }
   }
@@ -230,110 +548,84 @@ class ShapeParams {
   std::map<std::string, std::vector<float>> values_;
 };
 
-// An OBJ file's triangles (polygons fanned), all its shapes in one mesh. Normals: the file's
-// where every corner has one, else one per triangle (each triangle its own three vertices).
-Mesh loadObj(const std::filesystem::path& path, const LineReader& line) {
-  tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
-  config.vertex_color = false;
-  tinyobj::ObjReader reader;
-  if (!std::filesystem::is_regular_file(path))
-    line.fail("cannot read mesh '" + path.string() + "': no such file");
-  if (!reader.ParseFromFile(path.string(), config)) {
-    std::string error = reader.Error();
-    while (!error.empty() && (error.back() == '\n' || error.back() == '\r')) error.pop_back();
-    line.fail("cannot read mesh '" + path.string() + "': " + error.substr(0, error.find('\n')));
-  }
-  const tinyobj::attrib_t& attrib = reader.GetAttrib();
-  bool allNormals = true;
-  std::size_t corners = 0;
-  for (const tinyobj::shape_t& shape : reader.GetShapes())
-    for (const tinyobj::index_t& i : shape.mesh.indices) {
-      allNormals &= i.normal_index >= 0;
-      ++corners;
-    }
-  if (corners == 0) line.fail("mesh '" + path.string() + "' has no faces");
-
-  Mesh mesh;
-  auto position = [&](const tinyobj::index_t& i) {
-    return glm::vec3(attrib.vertices[3 * i.vertex_index], attrib.vertices[3 * i.vertex_index + 1],
-                     attrib.vertices[3 * i.vertex_index + 2]);
+// An object's shape: `drawn`, and for an OBJ file `shared`, the mesh its caster is prepared from
+// (empty for the other shapes: their caster is prepared from what is drawn). `room` is how many
+// triangles the scene has left; a shape with more is refused before it is made.
+ObjMesh readShape(LineReader& line, const std::string& shape, const std::filesystem::path& sceneFile,
+                  const ObjFileReader& readObj, std::size_t room) {
+  const auto fits = [&](double triangles) {
+    if (triangles > static_cast<double>(room))
+      line.fail("a " + shape + " of " + std::to_string(static_cast<unsigned long long>(triangles)) +
+                " triangles; a scene holds at most " + std::to_string(kMaxSceneTriangles) + " (" +
+                std::to_string(room) + " left)");
   };
-  if (allNormals) {
-    std::map<std::pair<int, int>, std::uint32_t> vertexOf;  // (position, normal) -> vertex
-    for (const tinyobj::shape_t& shape : reader.GetShapes())
-      for (const tinyobj::index_t& i : shape.mesh.indices) {
-        const auto [it, added] = vertexOf.emplace(std::pair(i.vertex_index, i.normal_index),
-                                                  static_cast<std::uint32_t>(mesh.positions.size()));
-        if (added) {
-          mesh.positions.push_back(position(i));
-          const glm::vec3 n(attrib.normals[3 * i.normal_index], attrib.normals[3 * i.normal_index + 1],
-                            attrib.normals[3 * i.normal_index + 2]);
-          mesh.normals.push_back(glm::length(n) > 0.0f ? glm::normalize(n) : glm::vec3(0, 1, 0));
-        }
-        mesh.indices.push_back(it->second);
-      }
-  } else {
-    for (const tinyobj::shape_t& shape : reader.GetShapes())
-      for (std::size_t c = 0; c + 2 < shape.mesh.indices.size(); c += 3) {
-        const glm::vec3 a = position(shape.mesh.indices[c]), b = position(shape.mesh.indices[c + 1]),
-                        d = position(shape.mesh.indices[c + 2]);
-        const glm::vec3 n = glm::cross(b - a, d - a);
-        // A zero-area triangle draws nothing; any unit normal keeps the arrays finite.
-        const glm::vec3 normal = glm::length(n) > 0.0f ? glm::normalize(n) : glm::vec3(0, 1, 0);
-        for (const glm::vec3& p : {a, b, d}) {
-          mesh.indices.push_back(static_cast<std::uint32_t>(mesh.positions.size()));
-          mesh.positions.push_back(p);
-          mesh.normals.push_back(normal);
-        }
-      }
-  }
-  if (const auto bad = firstNonFiniteVertex(mesh))
-    line.fail("mesh '" + path.string() + "' has a vertex that is not finite (vertex " +
-              std::to_string(*bad + 1) + ")");
-  return mesh;
-}
-
-Mesh readShape(LineReader& line, const std::string& shape, const std::filesystem::path& sceneFile) {
+  const auto made = [](Mesh mesh) { return ObjMesh{std::move(mesh), {}}; };
   if (shape == "plane") {
     ShapeParams p(line, shape, {"half", "divisions"});
-    return makePlane(p.positive("half", 5.0f), p.count("divisions", 1, 1));
+    const float half = p.positive("half", 5.0f);
+    const int divisions = p.count("divisions", 1, 1);
+    fits(2.0 * divisions * divisions);
+    return made(makePlane(half, divisions));
   }
   if (shape == "box") {
     ShapeParams p(line, shape, {"half"});
     const glm::vec3 half = p.half("half", 0.5f);
     if (glm::any(glm::lessThanEqual(half, glm::vec3(0.0f)))) line.fail("expected half sizes greater than 0");
-    return transformed(makeCube(1.0f), glm::scale(glm::mat4(1.0f), half));
+    fits(12.0);
+    return made(transformed(makeCube(1.0f), glm::scale(glm::mat4(1.0f), half)));
   }
   if (shape == "sphere") {
     ShapeParams p(line, shape, {"radius", "slices", "stacks"});
-    return makeSphere(p.positive("radius", 1.0f), p.count("slices", 32, 3), p.count("stacks", 16, 2));
+    const float radius = p.positive("radius", 1.0f);
+    const int slices = p.count("slices", 32, 3), stacks = p.count("stacks", 16, 2);
+    fits(2.0 * slices * (stacks - 1));
+    return made(makeSphere(radius, slices, stacks));
   }
   if (shape == "cylinder" || shape == "cone") {
     ShapeParams p(line, shape, {"radius", "height", "slices"});
     const float radius = p.positive("radius", 0.5f), height = p.positive("height", 1.0f);
     const int slices = p.count("slices", 32, 3);
-    return shape == "cylinder" ? makeCylinder(radius, height, slices) : makeCone(radius, height, slices);
+    fits((shape == "cylinder" ? 4.0 : 2.0) * slices);
+    return made(shape == "cylinder" ? makeCylinder(radius, height, slices)
+                                    : makeCone(radius, height, slices));
   }
   if (shape == "torus") {
     ShapeParams p(line, shape, {"major", "minor", "segments", "sides"});
     const float major = p.positive("major", 1.0f), minor = p.positive("minor", 0.25f);
     if (!(minor < major)) line.fail("expected the torus's minor radius less than its major radius");
-    return makeTorus(major, minor, p.count("segments", 32, 3), p.count("sides", 16, 3));
+    const int segments = p.count("segments", 32, 3), sides = p.count("sides", 16, 3);
+    fits(2.0 * segments * sides);
+    return made(makeTorus(major, minor, segments, sides));
   }
   if (shape == "stairs") {
     ShapeParams p(line, shape, {"steps", "width", "rise", "run"});
-    return makeStairs(p.count("steps", 5, 1), p.positive("width", 1.0f), p.positive("rise", 0.2f),
-                      p.positive("run", 0.3f));
+    const int steps = p.count("steps", 5, 1);
+    const float width = p.positive("width", 1.0f), rise = p.positive("rise", 0.2f),
+                run = p.positive("run", 0.3f);
+    fits(12.0 * steps);
+    return made(makeStairs(steps, width, rise, run));
   }
   if (shape == "mesh") {
     const std::string file = line.word("an OBJ file name after 'mesh'");
     line.end();
     const std::filesystem::path path = sceneFile.parent_path() / file;
-    return loadObj(path, line);
+    std::string text;
+    try {
+      text = readObj(path);
+    } catch (const std::runtime_error& e) {
+      line.fail("cannot read mesh '" + path.string() + "': " + e.what());
+    }
+    ObjMesh mesh;
+    try {
+      mesh = parseObj(text, path.string());
+    } catch (const SceneError& e) {
+      line.fail(e.what());
+    }
+    fits(static_cast<double>(mesh.drawn.triangleCount()));
+    return mesh;
   }
-  line.fail("unknown shape '" + shape +
-            "'; expected plane, box, sphere, cylinder, cone, torus, stairs or mesh");
+  line.fail("unknown shape " + quote(shape) +
+            "; expected plane, box, sphere, cylinder, cone, torus, stairs or mesh");
 }
 
 void readCamera(LineReader& line, SceneCamera& camera) {
@@ -341,7 +633,7 @@ void readCamera(LineReader& line, SceneCamera& camera) {
   std::set<std::string> seen;
   while (!line.done()) {
     const std::string key = line.word("a camera setting");
-    if (!seen.insert(key).second) line.fail("camera setting '" + key + "' given twice");
+    if (!seen.insert(key).second) line.fail("camera setting " + quote(key) + " given twice");
     if (key == "eye") {
       camera.eye = line.vec3("the eye");
       eye = true;
@@ -368,8 +660,8 @@ void readCamera(LineReader& line, SceneCamera& camera) {
     } else if (key == "mirrored") {
       camera.mirrored = true;
     } else {
-      line.fail("unknown camera setting '" + key +
-                "'; expected eye, target, up, fovy, near, far, orthographic or mirrored");
+      line.fail("unknown camera setting " + quote(key) +
+                "; expected eye, target, up, fovy, near, far, orthographic or mirrored");
     }
   }
   if (!eye || !target || !nearGiven) line.fail("expected the camera's eye, target and near");
@@ -388,18 +680,18 @@ void readLight(LineReader& line, SceneLight& light) {
   else if (type == "directional")
     light.position = glm::vec4(line.direction("the direction towards the light"), 0.0f);
   else
-    line.fail("expected the light's type (point or directional), got '" + type + "'");
+    line.fail("expected the light's type (point or directional), got " + quote(type));
   std::set<std::string> seen;
   while (!line.done()) {
     const std::string key = line.word("a light setting");
-    if (!seen.insert(key).second) line.fail("light setting '" + key + "' given twice");
+    if (!seen.insert(key).second) line.fail("light setting " + quote(key) + " given twice");
     if (key == "color")
       light.color = line.color();
     else if (key == "radius") {
       if (type != "point") line.fail("a directional light has no radius: its light reaches everywhere");
       light.radius = line.positive("the light's radius");
     } else
-      line.fail("unknown light setting '" + key + "'; expected color" +
+      line.fail("unknown light setting " + quote(key) + "; expected color" +
                 (type == "point" ? " or radius" : ""));
   }
 }
@@ -430,27 +722,21 @@ void readObjectLine(LineReader& line, SceneObject& object) {
   } else if (key == "bob")
     object.bob = line.number("the bob's amplitude");
   else
-    line.fail("unknown object setting '" + key +
-              "'; expected translate, rotate, scale, color, casts, receives, spin or bob");
+    line.fail("unknown object setting " + quote(key) +
+              "; expected translate, rotate, scale, color, casts, receives, spin or bob");
   line.end();
-}
-
-std::vector<std::string> words(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string w; in >> w;) out.push_back(w);
-  return out;
 }
 
 }  // namespace
 
-Scene parseScene(std::string_view text, const std::filesystem::path& file) {
+Scene parseScene(std::string_view text, const std::filesystem::path& file, const ObjFileReader& readObj) {
   Scene scene;
   scene.file = file;
   const std::string name = file.string();
   bool haveCamera = false, haveAmbient = false;
-  bool inObject = false;  // the last unindented line was an object: indented lines are its settings
-  std::vector<int> objectLines;
+  bool inObject = false;           // the last unindented line was an object: indented lines are its settings
+  std::vector<Mesh> casterInputs;  // per object: an OBJ file's shared positions, else empty
+  std::size_t triangles = 0;
   std::istringstream in{std::string(text)};
   int lineNumber = 0;
   std::string raw;
@@ -477,38 +763,57 @@ Scene parseScene(std::string_view text, const std::filesystem::path& file) {
       scene.ambient = line.color();
       line.end();
     } else if (keyword == "light") {
+      if (scene.lights.size() == kMaxSceneLights)
+        line.fail("more than " + std::to_string(kMaxSceneLights) + " lights; a scene has at most " +
+                  std::to_string(kMaxSceneLights));
       readLight(line, scene.lights.emplace_back());
     } else if (keyword == "object") {
+      if (scene.objects.size() == kMaxSceneObjects)
+        line.fail("more than " + std::to_string(kMaxSceneObjects) + " objects; a scene has at most " +
+                  std::to_string(kMaxSceneObjects));
       SceneObject object;
       object.name = line.word("the object's name");
+      object.line = lineNumber;
+      if (!std::all_of(object.name.begin(), object.name.end(), [](char c) { return c > ' ' && c < 0x7f; }))
+        line.fail("expected the object's name in printable ASCII, got " + quote(object.name));
       for (const SceneObject& o : scene.objects)
-        if (o.name == object.name) line.fail("a second object named '" + object.name + "'");
+        if (o.name == object.name) line.fail("a second object named " + quote(object.name));
       const std::string shape = line.word("the object's shape");
+      ObjMesh meshes;
       try {
-        object.mesh = readShape(line, shape, file);
+        meshes = readShape(line, shape, file, readObj, kMaxSceneTriangles - triangles);
       } catch (const std::invalid_argument& e) {
         line.fail(e.what());
       }
+      if (const auto bad = firstNonFiniteVertex(meshes.drawn))
+        line.fail("vertex " + std::to_string(*bad + 1) + " of the " + shape +
+                  " is not finite: its sizes are too large for a float");
+      object.mesh = std::move(meshes.drawn);
+      triangles += object.mesh.triangleCount();
       scene.objects.push_back(std::move(object));
-      objectLines.push_back(lineNumber);
+      casterInputs.push_back(std::move(meshes.shared));
       inObject = true;
     } else {
-      line.fail("unknown keyword '" + keyword +
-                "'; expected camera, ambient, light or object (settings of an object are indented)");
+      line.fail("unknown keyword " + quote(keyword) +
+                "; expected camera, ambient, light or object (settings of an object are indented)");
     }
   }
   // Casters are prepared once their settings are read: 'casts no' spares a mesh that cannot cast.
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     SceneObject& o = scene.objects[i];
     if (!o.casts) continue;
-    o.caster = prepareCaster(o.mesh);
+    const std::string where = name + ":" + std::to_string(o.line) + ": object '" + o.name + "' ";
+    try {
+      o.caster = prepareCaster(casterInputs[i].positions.empty() ? o.mesh : casterInputs[i]);
+    } catch (const std::invalid_argument& e) {
+      throw SceneError(where + "cannot cast shadow volumes: " + e.what());
+    }
     if (!o.caster.report.usable()) {
       std::string problems;
       for (const std::string& m : o.caster.report.messages)
         if (m.starts_with("not two-manifold") || m.starts_with("inconsistently wound"))
           problems += (problems.empty() ? "" : "; ") + m;
-      throw SceneError(name + ":" + std::to_string(objectLines[i]) + ": object '" + o.name +
-                       "' cannot cast shadow volumes: " + problems +
+      throw SceneError(where + "cannot cast shadow volumes: " + problems +
                        " (repair the mesh, or give it 'casts no')");
     }
   }
@@ -520,11 +825,13 @@ Scene parseScene(std::string_view text, const std::filesystem::path& file) {
 }
 
 Scene loadScene(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw SceneError(file.string() + ": cannot open the scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseScene(text.str(), file);
+  std::string text;
+  try {
+    text = readFile(file, kMaxSceneFileBytes);
+  } catch (const std::runtime_error& e) {
+    throw SceneError(file.string() + ": cannot open the scene file: " + e.what());
+  }
+  return parseScene(text, file);
 }
 
 }  // namespace stencil

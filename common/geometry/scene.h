@@ -7,7 +7,9 @@
 // welded, degenerate triangles dropped, and what the mesh breaks of the requirements (closed,
 // two-manifold, consistently wound) reported in words.
 #pragma once
+#include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <glm/glm.hpp>
 #include <limits>
 #include <stdexcept>
@@ -21,10 +23,21 @@
 
 namespace stencil {
 
-// A bad scene file: the message starts with "FILE:LINE: ".
+// A bad scene file: the message starts with "FILE:LINE: " ("FILE: " for what is wrong with the
+// whole file). One printable line: the constructor writes any other byte as \xNN.
 struct SceneError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  explicit SceneError(const std::string& message);
 };
+
+// What a scene file may ask for (docs/scenes.md). The lessons are for teaching: a file beyond
+// these is refused at the line that crosses them, rather than run for minutes without a word.
+inline constexpr std::size_t kMaxSceneLights = 16;
+inline constexpr std::size_t kMaxSceneObjects = 256;
+inline constexpr std::size_t kMaxSceneTriangles = 1'000'000;  // all objects together
+inline constexpr std::uintmax_t kMaxSceneFileBytes = 1u << 20;
+inline constexpr std::uintmax_t kMaxObjFileBytes = 64u << 20;
+inline constexpr std::size_t kMaxObjFaceCorners = 256;  // corners of one OBJ face
+inline constexpr float kMaxObjCoordinate = 1e6f;        // |x|, |y|, |z| of an OBJ vertex
 
 // What preparing a caster found and did. Open meshes are kept: their border edges extrude as
 // silhouette edges (shadow_volume.h), and their faces cap the volume from both sides.
@@ -46,6 +59,9 @@ struct PreparedCaster {
   EdgeAdjacency adjacency;
   CasterReport report;
 };
+// Prepares a mesh (its normals are ignored) as a caster: welds it by position, drops its
+// degenerate triangles and builds its edges' faces; the report says what was done and found.
+// Throws std::invalid_argument for an invalid mesh or a position that is not finite.
 PreparedCaster prepareCaster(const Mesh& mesh);
 
 struct SceneLight {
@@ -58,7 +74,8 @@ struct SceneLight {
 
 struct SceneObject {
   std::string name;
-  Mesh mesh;  // object space, with normals, as drawn
+  int line = 0;  // its object line in the scene file; 0 when built in code
+  Mesh mesh;     // object space, with normals, as drawn
   glm::mat4 model{1.0f};
   glm::vec3 color{0.8f};
   bool casts = true, receives = true;
@@ -97,10 +114,39 @@ struct Scene {
 // drawn mesh at its model matrix then, with its casts and receives. Points into the scene.
 std::vector<OracleObject> oracleObjects(const Scene&, double time);
 
+// An OBJ file's triangles (polygons triangulated, all its groups in one mesh), two ways:
+// `drawn` with normals, the file's where every corner has one, else each triangle its own three
+// vertices and flat normal; `shared`, positions only, each of the file's vertices once (in the
+// order the faces first use them) and indexed as the file indexes them, for prepareCaster.
+struct ObjMesh {
+  Mesh drawn, shared;
+};
+
+// Reads OBJ text; `name` names it in messages. Every face index (position, texture coordinate,
+// normal; 1-based, or negative counting back from the last one defined above) is checked
+// before the text is used. Throws SceneError "NAME:LINE: what is wrong" (an index out of range
+// or too large, a coordinate not finite or beyond kMaxObjCoordinate, a face of more than
+// kMaxObjFaceCorners corners, more than kMaxSceneTriangles triangles), or "NAME: ..." when the
+// file has no faces or tinyobjloader refuses it.
+ObjMesh parseObj(std::string_view text, const std::string& name);
+
+// The text of an OBJ file a scene names. Throws std::runtime_error with the reason in a few
+// words, without the path: "no such file", "it is a directory", "it is N bytes, ...".
+std::string readObjFile(const std::filesystem::path& path);
+
+// Where parseScene gets an OBJ file's text, given its path (joined to the scene file's folder).
+// readObjFile reads the disk; a test may serve text from memory. Throws std::runtime_error.
+using ObjFileReader = std::function<std::string(const std::filesystem::path&)>;
+
 // Reads a scene file (the format is documented in docs/scenes.md). OBJ paths are relative to
-// the scene file. Throws SceneError ("FILE:LINE: what is wrong") for anything it cannot use;
-// a caster whose mesh is not usable for shadow volumes is an error that names the edges' problem.
+// the scene file. Throws SceneError ("FILE:LINE: what is wrong", or "FILE: what is wrong" when
+// the file cannot be read, is not a regular file or is over kMaxSceneFileBytes) for anything it
+// cannot use; a caster whose mesh is not usable for shadow volumes is an error that names the
+// edges' problem. Returns the scene, every caster prepared.
 Scene loadScene(const std::filesystem::path& file);
-Scene parseScene(std::string_view text, const std::filesystem::path& file);
+// The same for a scene's text; `file` names it in messages and locates its OBJ files, which
+// `readObj` reads.
+Scene parseScene(std::string_view text, const std::filesystem::path& file,
+                 const ObjFileReader& readObj = readObjFile);
 
 }  // namespace stencil

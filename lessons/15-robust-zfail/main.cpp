@@ -197,13 +197,17 @@ Scene builtInScene() {
 // (prepareCaster's report) and model matrices that keep w >= 0 (affine). One line if not.
 void checkRequirements(const Scene& scene) {
   for (const SceneObject& o : scene.objects) {
+    // An object from a file is named by its line there, as the file's other errors are.
+    const std::string where =
+        scene.file.empty() ? "" : scene.file.string() + ":" + std::to_string(o.line) + ": ";
     const glm::vec4 lastRow(o.model[0][3], o.model[1][3], o.model[2][3], o.model[3][3]);
     if (lastRow != glm::vec4(0, 0, 0, 1))
-      throw UsageError("object '" + o.name + "': its model matrix is projective; shadow volumes need w >= 0");
+      throw UsageError(where + "object '" + o.name +
+                       "': its model matrix is projective; shadow volumes need w >= 0");
     if (!o.casts || o.caster.report.closed()) continue;
     // Non-manifold and inconsistent casters are refused when the file is read; open ones are left.
     throw UsageError(
-        "caster '" + o.name + "' is open (" + std::to_string(o.caster.report.borderEdges) +
+        where + "caster '" + o.name + "' is open (" + std::to_string(o.caster.report.borderEdges) +
         " border edges) and cannot bound a closed shadow volume; z-fail here needs closed casters"
         " (lesson 16 takes open ones)");
   }

@@ -241,6 +241,81 @@ TEST(SceneFile, EveryMistakeIsOneLineWithFileLineAndWhatWasExpected) {
   }
 }
 
+// Messages quote the file as printable ASCII: any other byte is written \xNN, and a long word
+// is cut short.
+TEST(SceneFile, MessagesArePrintable) {
+  EXPECT_EQ(
+      errorOf(std::string(header) + "l\x1b[2Jamp\x01\xff 1\n"),
+      "test.scene:3: unknown keyword 'l\\x1b[2Jamp\\x01\\xff'; expected camera, ambient, light or object "
+      "(settings of an object are indented)");
+  EXPECT_EQ(errorOf(std::string(header) + std::string(100, 'x') + "\n")
+                .rfind("test.scene:3: unknown keyword '" + std::string(40, 'x') + "...';", 0),
+            0u);
+  EXPECT_EQ(errorOf(std::string(header) + "object caf\xc3\xa9 box\n"),
+            "test.scene:3: expected the object's name in printable ASCII, got 'caf\\xc3\\xa9'");
+  EXPECT_EQ(errorOf(std::string("\0\0\0\n", 4), "x\n.scene"),
+            "x\\x0a.scene:1: unknown keyword '\\x00\\x00\\x00'; "
+            "expected camera, ambient, light or object (settings of an object are indented)");
+}
+
+// Limits keep a scene a lesson's size: lights, objects, triangles (docs/scenes.md).
+TEST(SceneFile, ScenesBeyondTheLimitsAreRefusedAtTheLineThatCrossesThem) {
+  std::string lights = header;
+  for (std::size_t i = 1; i < kMaxSceneLights; ++i) lights += "light point 1 2 3\n";
+  lights += "object a box\n";
+  EXPECT_EQ(parseScene(lights, "x.scene").lights.size(), kMaxSceneLights);
+  EXPECT_EQ(errorOf(lights + "light point 1 2 3\n"),
+            "test.scene:19: more than 16 lights; a scene has at most 16");
+
+  std::string objects = header;
+  for (std::size_t i = 0; i < kMaxSceneObjects; ++i) objects += "object o" + std::to_string(i) + " box\n";
+  EXPECT_EQ(parseScene(objects, "x.scene").objects.size(), kMaxSceneObjects);
+  EXPECT_EQ(errorOf(objects + "object last box\n"),
+            "test.scene:259: more than 256 objects; a scene has at most 256");
+
+  const std::string plane = std::string(header) + "object a plane divisions 707\n  casts no\n";
+  EXPECT_EQ(parseScene(plane, "x.scene").objects[0].mesh.triangleCount(), 999698u);
+  EXPECT_EQ(errorOf(plane + "object b sphere\n"),
+            "test.scene:5: a sphere of 960 triangles; a scene holds at most 1000000 (302 left)");
+  EXPECT_EQ(
+      errorOf(std::string(header) + "object a torus segments 16777216 sides 16777216\n"),
+      "test.scene:3: a torus of 562949953421312 triangles; a scene holds at most 1000000 (1000000 left)");
+  EXPECT_EQ(errorOf(std::string(header) + "object a torus major 3e38 minor 2e38\n")
+                .rfind("test.scene:3: vertex 1 of the torus is not finite", 0),
+            0u);
+}
+
+// parseScene reads OBJ files through the reader it is given; the default reads the disk.
+TEST(SceneFile, OBJFilesComeFromTheReaderGiven) {
+  const auto reader = [](const std::filesystem::path& path) -> std::string {
+    if (path == std::filesystem::path("d/t.obj"))
+      return "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    throw std::runtime_error("not served");
+  };
+  const Scene s = parseScene(std::string(header) + "object t mesh t.obj\n", "d/x.scene", reader);
+  EXPECT_EQ(s.objects[0].mesh.triangleCount(), 4u);
+  EXPECT_EQ(s.objects[0].line, 3);
+  try {
+    parseScene(std::string(header) + "object t mesh u.obj\n", "d/x.scene", reader);
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_STREQ(e.what(), "d/x.scene:3: cannot read mesh 'd/u.obj': not served");
+  }
+}
+
+TEST(SceneFile, ADirectoryIsNotAScene) {
+  try {
+    loadScene(scenes / "bad");
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              (scenes / "bad").string() + ": cannot open the scene file: it is a directory");
+  }
+  EXPECT_EQ(errorOf(std::string(header) + "object m mesh meshes\n", scenes / "x.scene"),
+            (scenes / "x.scene").string() + ":3: cannot read mesh '" + (scenes / "meshes").string() +
+                "': it is a directory");
+}
+
 TEST(SceneFile, AMissingFileIsNamed) {
   try {
     loadScene(scenes / "no-such.scene");
@@ -260,12 +335,132 @@ TEST(SceneFileObj, ACubeSplitAtSeamsIsWelded) {
   const Scene s = withMesh("split-cube.obj");
   const SceneObject& m = s.objects[0];
   EXPECT_EQ(m.mesh.triangleCount(), 12u) << "quads fanned into triangles";
-  EXPECT_EQ(m.mesh.positions.size(), 36u) << "no normals in the file: each triangle its own vertices";
+  EXPECT_EQ(m.mesh.positions.size(), 36u)
+      << "no normals in the file: each triangle drawn with its own vertices";
   EXPECT_EQ(m.mesh.normals.size(), m.mesh.positions.size());
+  EXPECT_EQ(m.caster.report.inputVertices, 24u) << "the file's vertices, as its faces share them";
   EXPECT_EQ(m.caster.report.weldedVertices, 8u);
   EXPECT_TRUE(m.caster.report.closed());
-  EXPECT_TRUE(mentions(m.caster.report, "welded 36 vertices into 8"));
+  EXPECT_TRUE(mentions(m.caster.report, "welded 24 vertices into 8 (vertices split at seams)"));
   EXPECT_GT(signedVolume(m.mesh), 7.99);  // 2^3, wound outwards
+}
+
+// A mesh without seams has nothing to weld, and its report says so by saying nothing of welding,
+// whether or not the file gives normals (drawn, each triangle has its own vertices either way).
+TEST(SceneFileObj, AMeshWithoutSeamsReportsNoWelding) {
+  const Scene s = withMesh("tetrahedron.obj");
+  const SceneObject& m = s.objects[0];
+  EXPECT_EQ(m.mesh.positions.size(), 12u) << "drawn flat: each triangle its own vertices";
+  EXPECT_EQ(m.caster.report.inputVertices, 4u);
+  EXPECT_EQ(m.caster.report.weldedVertices, 4u);
+  EXPECT_TRUE(m.caster.report.closed());
+  EXPECT_FALSE(mentions(m.caster.report, "welded")) << m.caster.report.messages.front();
+  EXPECT_TRUE(m.caster.report.messages.empty());
+
+  // Normals at every corner, each face its own: drawn split by normal, the caster still shares.
+  const ObjMesh smooth = parseObj(
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvn 0 0 -1\nvn 0 -1 0\nvn -1 0 0\nvn 1 1 1\n"
+      "f 1//1 3//1 2//1\nf 1//2 2//2 4//2\nf 1//3 4//3 3//3\nf 2//4 3//4 4//4\n",
+      "t.obj");
+  EXPECT_EQ(smooth.drawn.positions.size(), 12u);
+  EXPECT_EQ(smooth.shared.positions.size(), 4u);
+  const PreparedCaster c = prepareCaster(smooth.shared);
+  EXPECT_TRUE(c.report.closed());
+  EXPECT_TRUE(c.report.messages.empty());
+}
+
+// The caster prepared from the file's shared vertices is the one the drawn (split) mesh gives.
+TEST(SceneFileObj, TheCasterIsTheSameFromTheFilesVerticesAsFromTheDrawnMesh) {
+  for (const char* file : {"split-cube.obj", "degenerate-cube.obj", "open-box.obj", "tetrahedron.obj"}) {
+    const Scene s = withMesh(file, "  casts no\n");
+    const Scene c = withMesh(file);
+    const PreparedCaster fromDrawn = prepareCaster(s.objects[0].mesh);
+    EXPECT_EQ(c.objects[0].caster.mesh.positions, fromDrawn.mesh.positions) << file;
+    EXPECT_EQ(c.objects[0].caster.mesh.indices, fromDrawn.mesh.indices) << file;
+  }
+}
+
+std::string objErrorOf(const std::string& text) {
+  try {
+    parseObj(text, "m.obj");
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// Every index is checked against what the file defines, with the OBJ line that is wrong; nothing
+// out of range reaches the mesh.
+TEST(SceneFileObj, EveryBadIndexIsRefusedWithItsLine) {
+  const std::string tet = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n";
+  const struct {
+    std::string text, message;
+  } cases[] = {
+      {tet + "f 2 4 100000000\n", "m.obj:8: vertex index 100000000 is past the file's 4 vertices"},
+      {tet + "f 2 4 5\n", "m.obj:8: vertex index 5 is past the file's 4 vertices"},
+      {tet + "f -3 -1 -50\n",
+       "m.obj:8: vertex index -50 counts back past the first vertex: 4 defined above it"},
+      {"v 0 0 0\nf -1 -2 1\nv 1 0 0\nv 0 1 0\n",
+       "m.obj:2: vertex index -2 counts back past the first vertex: 1"},
+      {tet + "f 2 4 2147483648\n", "m.obj:8: vertex index '2147483648' is too large"},
+      {tet + "f 2 4 -99999999999999999999999\n",
+       "m.obj:8: vertex index '-99999999999999999999999' is too large"},
+      {tet + "f 2 4 0\n", "m.obj:8: vertex index 0: OBJ counts from 1"},
+      {tet + "f 2 4 x\n", "m.obj:8: expected a vertex index, got 'x'"},
+      {tet + "f 2/1 4 3\n", "m.obj:8: texture coordinate index 1 is past the file's 0 texture coordinates"},
+      {tet + "vt 0 0\nf 2/-2 4 3\n", "m.obj:9: texture coordinate index -2 counts back past the first"},
+      {tet + "vn 0 0 1\nf 2//2 4//1 3//1\n", "m.obj:9: normal index 2 is past the file's 1 normal"},
+      {tet + "vn 0 0 1\nf 2/1/1 4 3\n", "m.obj:9: texture coordinate index 1 is past"},
+      {tet + "vt 0 0\nf 2/1/3 4 3\n", "m.obj:9: normal index 3 is past the file's 0 normals"},
+      {"v 0 0 0\rv 1 0 0\r\nv 0 1 0\rf 1 2 4\r", "m.obj:4: vertex index 4 is past the file's 3 vertices"},
+      {"v 0 0 0\nv 1 0 -1e999\nv 0 1 0\nf 1 2 3\n", "m.obj:2: vertex 2 is not finite"},
+      {"v 0 0 0\nv 1 0 2e6\nv 0 1 0\nf 1 2 3\n", "m.obj:2: vertex 2 has a coordinate beyond +-1000000"},
+      {"v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1e999\nf 1//1 2//1 3//1\n", "m.obj:4: normal 1 is not finite"},
+      {"v 0 0 0\nv 1 0 0\n", "m.obj: no faces"},
+      {"v 0 0 0\nf" +
+           [] {
+             std::string corners;
+             for (int i = 0; i < 257; ++i) corners += " 1";
+             return corners;
+           }() +
+           "\n",
+       "m.obj:2: a face of more than 256 corners"},
+  };
+  for (const auto& c : cases) {
+    const std::string error = objErrorOf(c.text);
+    EXPECT_EQ(error.rfind(c.message, 0), 0u)
+        << "got: " << error << "\nexpected it to start with: " << c.message;
+  }
+}
+
+// Found by tests/fuzz (regressions/obj_fuzzer/exponent-overflow.obj): an exponent of ten
+// digits overflowed an int in tinyobjloader's number reader. Such numbers are refused first.
+TEST(SceneFileObj, ANumberWithAnAbsurdExponentIsRefused) {
+  EXPECT_EQ(objErrorOf("# vhv\n 3ert u\x8bth v\nv 0e-2147483648990erom \xa3(\n"),
+            "m.obj:3: the number '0e-2147483648990erom' has an exponent of more than 4 digits");
+  EXPECT_EQ(objErrorOf("v 0 0 0\nv 1 0 0\nvt 1E+000099999 0\nv 0 1 0\nf 1 2 3\n"),
+            "m.obj:3: the number '1E+000099999' has an exponent of more than 4 digits");
+  EXPECT_EQ(objErrorOf("v 0 0 0\nv 1 0 0\nv 0 1 1e9999\nf 1 2 3\n"), "m.obj:3: vertex 3 is not finite");
+  const ObjMesh m = parseObj("v 0 0 0\nv 1e-0001 0 0\nv 0 1E+0000 1e-9999\nf 1 2 3\n", "m.obj");
+  EXPECT_EQ(m.shared.positions[1], glm::vec3(0.1f, 0, 0));
+  EXPECT_EQ(m.shared.positions[2], glm::vec3(0, 1, 0));
+}
+
+// Found by tests/fuzz (regressions/obj_fuzzer/skin-weight-nan-joint.obj): tinyobjloader converts
+// a skin weight's joint (a vw line) to int even when it is not a number. Only the v, vt, vn and
+// f lines reach it; the rest, groups and materials included, change nothing of the mesh.
+TEST(SceneFileObj, OnlyVerticesAndFacesReachTheReader) {
+  const std::string tet = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+  const ObjMesh plain = parseObj(tet + "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n", "m.obj");
+  const ObjMesh extras = parseObj(
+      "mtllib ../../../../etc/passwd\no thing\n" + tet +
+          "vw 1 0e999 1\nvw 2 1e30 1\nt crease 2/1/0 1 2 nan\ng one\nusemtl x\ns 1\nf 1 3 2\nf 1 2 4\n"
+          "l 1 2\np 3\ng two\nf 1 4 3\nf 2 3 4\n",
+      "m.obj");
+  EXPECT_EQ(extras.drawn.positions, plain.drawn.positions);
+  EXPECT_EQ(extras.drawn.normals, plain.drawn.normals);
+  EXPECT_EQ(extras.drawn.indices, plain.drawn.indices);
+  EXPECT_EQ(extras.shared.indices, plain.shared.indices);
 }
 
 TEST(SceneFileObj, AnOpenBoxIsKeptWithItsBorderEdgesReported) {

@@ -1,0 +1,44 @@
+// libFuzzer target: a scene file's text through parseScene. After a line "%%obj" the rest of the
+// input is the text of every OBJ file the scene names (without one, a closed tetrahedron); OBJ
+// files are served from memory, so nothing outside the input is read. A SceneError is the
+// expected answer to bad input; any other exception, crash or sanitizer report is a bug.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "fuzz_check.h"
+#include "geometry/scene.h"
+
+namespace {
+
+constexpr std::string_view tetrahedron =
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+constexpr std::string_view separator = "\n%%obj\n";
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view input(reinterpret_cast<const char*>(data), size);
+  std::string_view scene = input, obj = tetrahedron;
+  if (const std::size_t at = input.find(separator); at != std::string_view::npos) {
+    scene = input.substr(0, at + 1);
+    obj = input.substr(at + separator.size());
+  }
+  try {
+    const stencil::Scene s =
+        stencil::parseScene(scene, "fuzz/in.scene", [&](const std::filesystem::path&) { return std::string(obj); });
+    std::size_t triangles = 0;
+    for (const stencil::SceneObject& o : s.objects) {
+      stencil::validateMesh(o.mesh);
+      if (!stencil::allFinite(o.mesh)) __builtin_trap();
+      triangles += o.mesh.triangleCount();
+    }
+    if (s.lights.size() > stencil::kMaxSceneLights || s.objects.size() > stencil::kMaxSceneObjects ||
+        triangles > stencil::kMaxSceneTriangles)
+      __builtin_trap();
+  } catch (const stencil::SceneError& e) {
+    stencil::fuzz::checkMessage(e.what(), "fuzz/in.scene:");
+  }
+  return 0;
+}
