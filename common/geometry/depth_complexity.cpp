@@ -7,8 +7,9 @@
 
 namespace stencil {
 
-std::vector<std::uint32_t> depthComplexity(const std::vector<OracleObject>& objects, const glm::mat4& viewProjection,
-                                           glm::ivec2 size, FacesCounted faces) {
+std::vector<std::uint32_t> depthComplexity(const std::vector<OracleObject>& objects,
+                                           const glm::mat4& viewProjection, glm::ivec2 size,
+                                           FacesCounted faces) {
   RayScene scene;
   for (const OracleObject& o : objects) {
     if (o.sphere || !o.mesh) throw std::invalid_argument("depthComplexity: every object needs a mesh");
@@ -35,13 +36,14 @@ std::vector<std::uint32_t> depthComplexity(const std::vector<OracleObject>& obje
         const bool front = glm::dot(hit.normal, ray.direction) < 0.0f;
         if (faces == FacesCounted::All || front == (faces == FacesCounted::Front)) ++n;
       }
-      counts[static_cast<std::size_t>(py) * static_cast<std::size_t>(size.x) + static_cast<std::size_t>(px)] = n;
+      counts[static_cast<std::size_t>(py) * static_cast<std::size_t>(size.x) + static_cast<std::size_t>(px)] =
+          n;
     }
   return counts;
 }
 
-CountReport compareCounts(const std::vector<std::uint32_t>& expected, const std::vector<std::uint32_t>& actual,
-                          glm::ivec2 size) {
+CountReport compareCounts(const std::vector<std::uint32_t>& expected,
+                          const std::vector<std::uint32_t>& actual, glm::ivec2 size) {
   const std::size_t n = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y);
   if (expected.size() != n || actual.size() != n)
     throw std::invalid_argument("compareCounts: the counts do not match the image size");
@@ -49,7 +51,8 @@ CountReport compareCounts(const std::vector<std::uint32_t>& expected, const std:
   report.pixels = n;
   for (int y = 0; y < size.y; ++y)
     for (int x = 0; x < size.x; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(size.x) + static_cast<std::size_t>(x);
+      const std::size_t i =
+          static_cast<std::size_t>(y) * static_cast<std::size_t>(size.x) + static_cast<std::size_t>(x);
       report.expectedTotal += expected[i];
       report.actualTotal += actual[i];
       if (expected[i] == actual[i]) continue;

@@ -24,13 +24,14 @@ enum class FacesCounted { All, Front, Back };
 // shared by two triangles crosses both (the rasterizer draws one): such pixels differ from their
 // neighbours and are forgiven by compareCounts. Throws std::invalid_argument for an object given
 // as a true sphere (OracleObject::sphere) or a mesh RayScene::add refuses.
-std::vector<std::uint32_t> depthComplexity(const std::vector<OracleObject>& objects, const glm::mat4& viewProjection,
-                                           glm::ivec2 size, FacesCounted faces = FacesCounted::All);
+std::vector<std::uint32_t> depthComplexity(const std::vector<OracleObject>& objects,
+                                           const glm::mat4& viewProjection, glm::ivec2 size,
+                                           FacesCounted faces = FacesCounted::All);
 
 struct CountReport {
-  std::size_t pixels = 0;         // pixels compared
-  std::size_t disagreements = 0;  // pixels whose counts differ
-  std::size_t onEdges = 0;        // of which on an edge of the expected picture (forgiven)
+  std::size_t pixels = 0;                            // pixels compared
+  std::size_t disagreements = 0;                     // pixels whose counts differ
+  std::size_t onEdges = 0;                           // of which on an edge of the expected picture (forgiven)
   std::uint64_t expectedTotal = 0, actualTotal = 0;  // sums over every pixel
   bool passed() const { return disagreements == onEdges; }
 };
@@ -38,7 +39,7 @@ struct CountReport {
 // Compares two per-pixel counts of the same size (row order does not matter, as long as both
 // agree). A pixel is on an edge when a pixel of its 3x3 neighbourhood has another expected count.
 // Throws std::invalid_argument when either vector's size is not size.x * size.y.
-CountReport compareCounts(const std::vector<std::uint32_t>& expected, const std::vector<std::uint32_t>& actual,
-                          glm::ivec2 size);
+CountReport compareCounts(const std::vector<std::uint32_t>& expected,
+                          const std::vector<std::uint32_t>& actual, glm::ivec2 size);
 
 }  // namespace stencil

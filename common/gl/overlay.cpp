@@ -29,8 +29,8 @@ void ImageOverlay::draw(const Image& picture, int left, int top, int height) {
   glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_, 0);
   // The texture's first row is the picture's top: the blit turns it upside down onto GL's rows.
   const int y1 = height - top, y0 = y1 - picture.height;
-  glBlitFramebuffer(0, 0, picture.width, picture.height, left, y1, left + picture.width, y0, GL_COLOR_BUFFER_BIT,
-                    GL_NEAREST);
+  glBlitFramebuffer(0, 0, picture.width, picture.height, left, y1, left + picture.width, y0,
+                    GL_COLOR_BUFFER_BIT, GL_NEAREST);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read));
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
 }

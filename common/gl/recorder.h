@@ -52,7 +52,7 @@ class PassRecorder {
   // unless the frame is measured.
   void pauseSamples();
   void resumeSamples();
-  void endFrame();                                          // reads the queries back
+  void endFrame();  // reads the queries back
 
   const std::vector<std::string>& declaredPasses() const { return declared_; }
   const std::vector<PassStats>& passStats() const { return stats_; }  // last frame
@@ -72,7 +72,7 @@ class PassRecorder {
   bool timerCounts_ = false;  // the driver's timer query has counter bits: it can time
   FrameRequest request_;
   std::vector<PassStats> stats_;
-  std::vector<Queries> queries_;  // one set per pass of the frame, reused across frames
+  std::vector<Queries> queries_;              // one set per pass of the frame, reused across frames
   std::vector<std::uint64_t> pausedSamples_;  // per pass: counted before its query was paused
   std::uint64_t currentPaused_ = 0;
   std::vector<Snapshot> snapshots_;

@@ -110,7 +110,8 @@ Rgb countColour(int count, int top) {
       {{40, 20, 110}, {120, 30, 160}, {200, 50, 110}, {240, 110, 40}, {250, 190, 40}, {250, 250, 180}}};
   if (count <= 0) return {0, 0, 0};
   top = std::max(top, 1);
-  const float t = top == 1 ? 1.0f : static_cast<float>(std::min(count, top) - 1) / static_cast<float>(top - 1);
+  const float t =
+      top == 1 ? 1.0f : static_cast<float>(std::min(count, top) - 1) / static_cast<float>(top - 1);
   const float at = t * static_cast<float>(kRamp.size() - 1);
   const std::size_t i = std::min(static_cast<std::size_t>(at), kRamp.size() - 2);
   const float f = at - static_cast<float>(i);
@@ -150,13 +151,15 @@ Image countLegend(const std::vector<std::uint64_t>& histogram, int top, bool sat
   const auto column = [&](int left, int right, std::uint64_t n, Rgb c) {
     // A bar for every count present, at least a pixel tall, on a log scale: a count a handful of
     // pixels have still shows beside one that most have.
-    const int bar = n == 0 ? 0
-                           : std::max(1, static_cast<int>(std::lround(barHeight * std::log1p(static_cast<double>(n)) /
-                                                                      std::log1p(static_cast<double>(most)))));
+    const int bar =
+        n == 0 ? 0
+               : std::max(1, static_cast<int>(std::lround(barHeight * std::log1p(static_cast<double>(n)) /
+                                                          std::log1p(static_cast<double>(most)))));
     fillRect(out, left, stripTop - bar, right - left, bar, c);
     fillRect(out, left, stripTop, right - left, strip, c);
   };
-  for (int k = 0; k <= top; ++k) column(columnX(k), std::max(columnX(k + 1), columnX(k) + 1), pixels(k), countColour(k, top));
+  for (int k = 0; k <= top; ++k)
+    column(columnX(k), std::max(columnX(k + 1), columnX(k) + 1), pixels(k), countColour(k, top));
   fillRect(out, x0, stripTop + strip, x1 - x0, 1, {200, 200, 200});
   // Labels: top always, and the multiples of a round step (1, 2, 5, 10, 20, 50, 100) far enough
   // apart to read, dropping those that would touch top's.

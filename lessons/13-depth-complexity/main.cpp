@@ -63,14 +63,16 @@ LessonInfo lessonInfo() {
   info.title = "Depth complexity";
   info.summary =
       "The scene drawn once more into the stencil only, INCR on every fragment, on those that pass the\n"
-      "depth test or on those that fail it; the counts in pseudo-colour with a histogram from occlusion queries.";
+      "depth test or on those that fail it; the counts in pseudo-colour with a histogram from occlusion "
+      "queries.";
   info.options = {
       {"count", 'C',
        "what is counted: 0 every fragment (depth test off), 1 fragments that pass the depth test,\n"
        "      2 fragments that fail it, 3 every fragment by INCR on both depth outcomes",
        kEveryFragment, 3},
       {"cull", 'U', "cull back faces: only front faces are drawn, and counted", 0},
-      {"show", 'X', "the counts in pseudo-colour (off: the shaded scene; the stencil counts all the same)", 1},
+      {"show", 'X', "the counts in pseudo-colour (off: the shaded scene; the stencil counts all the same)",
+       1},
       {"legend", 'L', "the legend: a column per count, its bar the share of pixels with that count", 1},
       {"wrap", 'W', "INCR_WRAP, which starts again at 0 after 255 (off: INCR, which stops at 255)", 0},
       {"stack", 'T', "a stack of 300 quads face on instead of the objects: counts past 255", 0},
@@ -82,14 +84,23 @@ LessonInfo lessonInfo() {
   info.variants = {
       {"all", "every fragment counted, both sides of every surface", {}},
       {"all-culled", "every fragment of the front faces: back faces culled", {{"cull", 1}}},
-      {"depth-pass", "the fragments that pass the depth test: what was written, in draw order", {{"count", kDepthPass}}},
+      {"depth-pass",
+       "the fragments that pass the depth test: what was written, in draw order",
+       {{"count", kDepthPass}}},
       {"depth-fail", "the fragments that fail the depth test: drawn for nothing", {{"count", kDepthFail}}},
-      {"both-outcomes", "INCR on both depth outcomes, depth test on: the same as every fragment",
+      {"both-outcomes",
+       "INCR on both depth outcomes, depth test on: the same as every fragment",
        {{"count", kBothOutcomes}}},
       {"shaded", "the scene the counts are of, shaded", {{"show", 0}}},
-      {"stack-saturates", "300 quads, INCR: the count stops at 255, shown as 255+", {{"stack", 1}}, {},
+      {"stack-saturates",
+       "300 quads, INCR: the count stops at 255, shown as 255+",
+       {{"stack", 1}},
+       {},
        alongTheStack()},
-      {"stack-wraps", "300 quads, INCR_WRAP: 300 wraps to 44, silently wrong", {{"stack", 1}, {"wrap", 1}}, {},
+      {"stack-wraps",
+       "300 quads, INCR_WRAP: 300 wraps to 44, silently wrong",
+       {{"stack", 1}, {"wrap", 1}},
+       {},
        alongTheStack()},
   };
   info.passes = {"scene", "count", "histogram", "show", "legend"};
@@ -129,9 +140,9 @@ class DepthComplexity final : public Lesson {
     glClearColor(0.1f, 0.1f, 0.13f, 1.0f);
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_DEPTH_TEST);  // the nearest surface wins
     glDepthFunc(GL_LESS);
-    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_STENCIL_TEST);  // the stencil is not used yet
     drawShaded(f, scene);
     f.pass("scene");
 
@@ -139,7 +150,7 @@ class DepthComplexity final : public Lesson {
     glClear(GL_DEPTH_BUFFER_BIT);  // the depth test sees the scene arrive in draw order again
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // counting shows nothing yet
     glEnable(GL_STENCIL_TEST);
-    glStencilMask(0xFF);
+    glStencilMask(0xFF);                // all 8 bits count
     glStencilFunc(GL_ALWAYS, 0, 0xFF);  // every fragment reaches the stencil operation
     const GLenum up = f.on("wrap") ? GL_INCR_WRAP : GL_INCR;
     switch (f.option("count")) {
@@ -190,8 +201,8 @@ class DepthComplexity final : public Lesson {
         drawQuad(glm::vec4(c[0], c[1], c[2], 255.0f) / 255.0f);
       }
     }
-    glDisable(GL_STENCIL_TEST);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDisable(GL_STENCIL_TEST);                       // the counts stay for --stencil-out and the tests
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);  // GL's defaults again
     glEnable(GL_DEPTH_TEST);
     f.pass("show");
 
@@ -201,7 +212,7 @@ class DepthComplexity final : public Lesson {
       overlay_.draw(legend, 0, f.size.y - legend.height, f.size.y);
     }
     f.pass("legend");
-    glDisable(GL_CULL_FACE);
+    glDisable(GL_CULL_FACE);  // GL's defaults again
     glFrontFace(GL_CCW);
 
     report(f, histogram, largest, counted, covered);
@@ -218,7 +229,7 @@ class DepthComplexity final : public Lesson {
     GLuint queries[256];
     glGenQueries(256, queries);
     const auto samples = [&](GLenum func, int ref, GLuint query) {
-      glStencilFunc(func, ref, 0xFF);
+      glStencilFunc(func, ref, 0xFF);  // the quad passes where `ref func stencil` holds
       glBeginQuery(GL_SAMPLES_PASSED, query);
       drawQuad(glm::vec4(0.0f));
       glEndQuery(GL_SAMPLES_PASSED);
@@ -247,7 +258,8 @@ class DepthComplexity final : public Lesson {
   // ---- drawing --------------------------------------------------------------------------------
 
   void drawShaded(const Frame& f, const Scene& scene) {
-    const SceneLight light = scene.lights.empty() ? SceneLight{{3.0f, 6.0f, 4.0f, 1.0f}} : scene.lights.front();
+    const SceneLight light =
+        scene.lights.empty() ? SceneLight{{3.0f, 6.0f, 4.0f, 1.0f}} : scene.lights.front();
     light_.set("viewProjection", f.projection * f.view);
     light_.set("ambient", scene.ambient + glm::vec3(0.15f));
     light_.set("light", light.position);
@@ -293,16 +305,16 @@ class DepthComplexity final : public Lesson {
                                       glm::rotate(translate(id, {-1.7f, 0.85f, -0.2f}), 0.5f, {0, 1, 0}),
                                       {0.9f - 0.2f * static_cast<float>(i), 0.45f, 0.2f}));
     for (int i = 0; i < 4; ++i)
-      s.objects.push_back(sceneObject("sphere-" + std::to_string(i), makeSphere(0.45f, 24, 12),
-                                      translate(id, {0.5f - 0.45f * static_cast<float>(i), 0.5f,
-                                                     1.6f - 1.1f * static_cast<float>(i)}),
-                                      {0.3f, 0.6f + 0.08f * static_cast<float>(i), 0.4f}));
+      s.objects.push_back(sceneObject(
+          "sphere-" + std::to_string(i), makeSphere(0.45f, 24, 12),
+          translate(id, {0.5f - 0.45f * static_cast<float>(i), 0.5f, 1.6f - 1.1f * static_cast<float>(i)}),
+          {0.3f, 0.6f + 0.08f * static_cast<float>(i), 0.4f}));
     for (int i = 0; i < 3; ++i) {
-      SceneObject torus = sceneObject(
-          "torus-" + std::to_string(i), makeTorus(0.5f, 0.14f, 32, 12),
-          glm::rotate(translate(id, {1.5f + 0.55f * static_cast<float>(i), 1.1f, -0.4f}),
-                      glm::radians(90.0f) * static_cast<float>(i % 2), {1, 0, 0}),
-          {0.85f, 0.75f - 0.15f * static_cast<float>(i), 0.3f});
+      SceneObject torus =
+          sceneObject("torus-" + std::to_string(i), makeTorus(0.5f, 0.14f, 32, 12),
+                      glm::rotate(translate(id, {1.5f + 0.55f * static_cast<float>(i), 1.1f, -0.4f}),
+                                  glm::radians(90.0f) * static_cast<float>(i % 2), {1, 0, 0}),
+                      {0.85f, 0.75f - 0.15f * static_cast<float>(i), 0.3f});
       torus.spinAxis = {1.0f, 0.0f, 0.0f};
       torus.spinDegPerSecond = 20.0f;
       s.objects.push_back(torus);
@@ -318,7 +330,8 @@ class DepthComplexity final : public Lesson {
     for (int i = 0; i < kStackLayers; ++i) {
       const float z = -0.02f * static_cast<float>(i);
       const auto first = static_cast<std::uint32_t>(quads.positions.size());
-      for (const glm::vec2 corner : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
+      for (const glm::vec2 corner :
+           {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
         quads.positions.push_back({corner, z});
         quads.normals.push_back(normal);
       }
@@ -332,11 +345,11 @@ class DepthComplexity final : public Lesson {
 
   // ---- what --stats reports, and the oracle -------------------------------------------------------
 
-  static void report(Frame& f, const std::vector<std::uint64_t>& histogram, int largest, std::uint64_t counted,
-                     std::uint64_t covered) {
+  static void report(Frame& f, const std::vector<std::uint64_t>& histogram, int largest,
+                     std::uint64_t counted, std::uint64_t covered) {
     f.count("max_count", static_cast<std::uint64_t>(largest));
-    f.count("covered_pixels", covered);        // count 1 or more
-    f.count("counted_fragments", counted);     // the sum of the counts: fragments counted, as stored
+    f.count("covered_pixels", covered);     // count 1 or more
+    f.count("counted_fragments", counted);  // the sum of the counts: fragments counted, as stored
     f.count("saturated_pixels", f.on("wrap") ? 0 : histogram[255]);  // INCR stopped there
     for (int k = 0; k <= largest; ++k)
       if (histogram[static_cast<std::size_t>(k)] > 0)
@@ -384,5 +397,6 @@ class DepthComplexity final : public Lesson {
 
 int main(int argc, char** argv) {
   return runSceneLesson(
-      lessonInfo(), [](const Scene* fromFile) { return std::make_unique<DepthComplexity>(fromFile); }, argc, argv);
+      lessonInfo(), [](const Scene* fromFile) { return std::make_unique<DepthComplexity>(fromFile); }, argc,
+      argv);
 }

@@ -126,10 +126,12 @@ TEST(DepthComplexity, PastTwoHundredAndFiftyFive) {
 // Scene files (lessons 15-16's format): the ray count agrees with every fragment, with and without
 // culling; the mirrored view turns the front faces round, which culling must follow.
 TEST(DepthComplexity, SceneFilesAgreeWithTheRayCount) {
-  for (const char* file : {"builtin.scene", "two-lights.scene", "hard/mirrored-view.scene", "hard/open-mesh.scene"}) {
+  for (const char* file :
+       {"builtin.scene", "two-lights.scene", "hard/mirrored-view.scene", "hard/open-mesh.scene"}) {
     for (const char* cull : {"0", "1"}) {
-      const auto r = run("scene", std::string("--scene ") + SCENES_DIR + "/" + file + " --set oracle=1 --set cull=" + cull,
-                         true);
+      const auto r =
+          run("scene",
+              std::string("--scene ") + SCENES_DIR + "/" + file + " --set oracle=1 --set cull=" + cull, true);
       if (!r) GTEST_SKIP() << "no GL context";
       expectRayCountAgrees(*r, std::string(file) + " cull " + cull);
     }

@@ -68,7 +68,8 @@ TEST(DepthComplexity, ASphereObjectIsRefused) {
 TEST(DepthComplexity, CompareForgivesOnlyEdgesOfTheExpectedPicture) {
   const glm::ivec2 size(5, 5);
   std::vector<std::uint32_t> expected(25, 1);
-  for (int y = 0; y < 5; ++y) expected[static_cast<std::size_t>(y * 5 + 4)] = 2;  // a column of 2 at the right
+  for (int y = 0; y < 5; ++y)
+    expected[static_cast<std::size_t>(y * 5 + 4)] = 2;  // a column of 2 at the right
   std::vector<std::uint32_t> actual = expected;
   actual[3] = 2;   // beside the column: an edge, forgiven
   actual[12] = 0;  // the middle, all 1s around: wrong
@@ -93,7 +94,8 @@ TEST(RaycastAllHits, EveryTriangleALoopFindsAndNoMore) {
                   {-std::cos(a), 0.05f, -std::sin(a) + 0.1f * std::cos(2.0f * a)}};
     std::size_t brute = 0;
     for (std::size_t t = 0; t < world.triangleCount(); ++t)
-      brute += intersectTriangle(ray, world.positions[world.indices[3 * t]], world.positions[world.indices[3 * t + 1]],
+      brute += intersectTriangle(ray, world.positions[world.indices[3 * t]],
+                                 world.positions[world.indices[3 * t + 1]],
                                  world.positions[world.indices[3 * t + 2]])
                    .has_value();
     EXPECT_EQ(scene.allHits(ray).size(), brute) << i;
