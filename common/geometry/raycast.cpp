@@ -264,6 +264,37 @@ bool RayScene::occluded(const Ray& ray, float tMin, float tMax, const std::funct
   return false;
 }
 
+std::vector<RayHit> RayScene::allHits(const Ray& ray, float tMin, float tMax) const {
+  const RaySetup r = setUp(ray);
+  std::vector<RayHit> hits;
+  for (std::size_t o = 0; o < objects_.size(); ++o) {
+    const Object& object = objects_[o];
+    if (object.nodes.empty() || std::isnan(enterBox(r, object.nodes[0].min, object.nodes[0].max, tMin, tMax)))
+      continue;
+    std::array<std::uint32_t, 64> stack;  // one waiting sibling per level, as in traverse
+    std::size_t size = 0;
+    stack[size++] = 0u;
+    while (size > 0) {
+      const std::uint32_t index = stack[--size];
+      const auto& node = object.nodes[index];
+      if (node.count > 0) {
+        for (std::uint32_t slot = node.first; slot < node.first + node.count; ++slot) {
+          const glm::vec3* c = &object.corners[3 * static_cast<std::size_t>(slot)];
+          float t = 0.0f;
+          if (hitTriangle(r.origin, r.direction, c[0], c[1], c[2], tMin, tMax, t))
+            hits.push_back({t, static_cast<int>(o), object.triangle[slot],
+                            glm::normalize(glm::cross(c[1] - c[0], c[2] - c[0]))});
+        }
+        continue;
+      }
+      for (const std::uint32_t child : {index + 1, node.first})  // the left child follows its parent
+        if (!std::isnan(enterBox(r, object.nodes[child].min, object.nodes[child].max, tMin, tMax)))
+          stack[size++] = child;
+    }
+  }
+  return hits;
+}
+
 std::size_t RayScene::objectCount() const {
   return objects_.size();
 }

@@ -68,6 +68,11 @@ class RayScene {
   // when empty); stops at the first.
   bool occluded(const Ray& ray, float tMin, float tMax, const std::function<bool(int)>& casts = {}) const;
 
+  // Every hit with t in (tMin, tMax), over all objects, in no particular order: what a ray
+  // crosses on its way (depth complexity, geometry/depth_complexity.h). A ray through an edge
+  // shared by two triangles hits both, as firstHit's edges do.
+  std::vector<RayHit> allHits(const Ray& ray, float tMin = 0.0f, float tMax = INFINITY) const;
+
   std::size_t objectCount() const;
 
  private:

@@ -103,6 +103,12 @@ void Frame::pass(std::string_view name) {
   recorder_.pass(name);
 }
 
+void Frame::ownOcclusionQueries(const std::function<void()>& draw) {
+  recorder_.pauseSamples();
+  draw();
+  recorder_.resumeSamples();
+}
+
 void Frame::count(std::string_view name, std::uint64_t amount) {
   recorder_.count(name, amount);
 }

@@ -102,6 +102,10 @@ class Frame {
   // Adds to a named count of the lesson's own (e.g. "scene_renderings"), reported per frame
   // under "counts" in --stats: work that draw calls and triangles do not show.
   void count(std::string_view name, std::uint64_t amount = 1);
+  // Runs draw while the pass's own occlusion query (--stats) is paused, so draw may run
+  // GL_SAMPLES_PASSED queries of its own (GL allows one active query per target). The fragments
+  // draw produces are left out of the pass's samples_passed.
+  void ownOcclusionQueries(const std::function<void()>& draw);
   // Saves the stencil as it is now as the shadow mask NAME.png under --mask-out DIR (white where
   // the stencil is 0, lit; black elsewhere), in the last frame of a headless run or of a window
   // run with --frames; does nothing otherwise. Scene lessons call it once per light with "light-<i>", i the

@@ -55,12 +55,14 @@ void PassRecorder::beginFrame(FrameRequest request) {
   stats_.clear();
   snapshots_.clear();
   counts_.clear();
+  pausedSamples_.clear();
   checkGlErrors("before the frame");
   beginPass();
 }
 
 void PassRecorder::beginPass() {
   current_ = PassStats{};
+  currentPaused_ = 0;
   counting = &current_;
   if (request_.measure) {
     if (queries_.size() <= stats_.size()) {
@@ -94,10 +96,23 @@ void PassRecorder::pass(std::string_view name) {
   checkGlErrors("in pass '" + current_.name + "'");
   const std::size_t index = stats_.size();
   stats_.push_back(current_);
+  pausedSamples_.push_back(currentPaused_);
   if (request_.captureAll || request_.captureOnly == index)
     snapshots_.push_back({current_.name, framebuffer_.readColour(), framebuffer_.readStencil()});
   framebuffer_.bind();  // reading may have changed the read binding; keep drawing into ours
   beginPass();
+}
+
+void PassRecorder::pauseSamples() {
+  if (!request_.measure) return;
+  const unsigned query = queries_[stats_.size()].samples;
+  glEndQuery(GL_SAMPLES_PASSED);
+  currentPaused_ += queryResult(query);
+}
+
+void PassRecorder::resumeSamples() {
+  if (!request_.measure) return;
+  glBeginQuery(GL_SAMPLES_PASSED, queries_[stats_.size()].samples);
 }
 
 void PassRecorder::count(std::string_view name, std::uint64_t amount) {
@@ -121,7 +136,7 @@ void PassRecorder::endFrame() {
   checkGlErrors("at the end of the frame");
   if (!request_.measure) return;
   for (std::size_t i = 0; i < stats_.size(); ++i) {
-    stats_[i].samplesPassed = queryResult(queries_[i].samples);
+    stats_[i].samplesPassed = queryResult(queries_[i].samples) + pausedSamples_[i];
     const double gpuMs = static_cast<double>(queryResult(queries_[i].time)) / 1e6;
     // The pass's CPU time runs from before its query began to after glFinish: no GPU time fits
     // in it that is longer.

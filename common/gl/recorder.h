@@ -47,7 +47,12 @@ class PassRecorder {
   void beginFrame(FrameRequest);
   void pass(std::string_view name);                         // the end of a named pass
   void count(std::string_view name, std::uint64_t amount);  // a lesson's own count (Frame::count)
-  void endFrame();                                          // reads the queries back
+  // Ends the current pass's occlusion query early, keeping what it counted so far, and begins it
+  // again: between the two the lesson may run its own (Frame::ownOcclusionQueries). No-ops
+  // unless the frame is measured.
+  void pauseSamples();
+  void resumeSamples();
+  void endFrame();  // reads the queries back
 
   const std::vector<std::string>& declaredPasses() const { return declared_; }
   const std::vector<PassStats>& passStats() const { return stats_; }  // last frame
@@ -67,7 +72,9 @@ class PassRecorder {
   bool timerCounts_ = false;  // the driver's timer query has counter bits: it can time
   FrameRequest request_;
   std::vector<PassStats> stats_;
-  std::vector<Queries> queries_;  // one set per pass of the frame, reused across frames
+  std::vector<Queries> queries_;              // one set per pass of the frame, reused across frames
+  std::vector<std::uint64_t> pausedSamples_;  // per pass: counted before its query was paused
+  std::uint64_t currentPaused_ = 0;
   std::vector<Snapshot> snapshots_;
   std::vector<std::pair<std::string, std::uint64_t>> counts_;
   PassStats current_;

@@ -1,6 +1,7 @@
 #include "gl/stencil_view.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace stencil {
@@ -22,17 +23,26 @@ void fillRect(Image& img, int x0, int y0, int w, int h, Rgb c) {
     }
 }
 
-// Draws a number with the digit font scaled by `scale`; returns the width drawn.
-int drawNumber(Image& img, int x, int y, int number, int scale, Rgb c) {
-  const std::string text = std::to_string(number);
+constexpr std::uint16_t kPlus = 0b000'010'111'010'000;
+
+// Draws digits and '+' with the font scaled by `scale`; returns the width drawn.
+int drawText(Image& img, int x, int y, const std::string& text, int scale, Rgb c) {
   for (size_t i = 0; i < text.size(); ++i) {
-    const std::uint16_t glyph = kDigits[static_cast<size_t>(text[i] - '0')];
+    const std::uint16_t glyph = text[i] == '+' ? kPlus : kDigits[static_cast<size_t>(text[i] - '0')];
     for (int row = 0; row < 5; ++row)
       for (int col = 0; col < 3; ++col)
         if (glyph & (1u << (14 - (row * 3 + col))))
           fillRect(img, x + (static_cast<int>(i) * 4 + col) * scale, y + row * scale, scale, scale, c);
   }
   return static_cast<int>(text.size()) * 4 * scale;
+}
+
+int drawNumber(Image& img, int x, int y, int number, int scale, Rgb c) {
+  return drawText(img, x, y, std::to_string(number), scale, c);
+}
+
+int textWidth(const std::string& text, int scale) {
+  return static_cast<int>(text.size()) * 4 * scale - scale;
 }
 
 }  // namespace
@@ -90,6 +100,111 @@ Image stencilRamp(const Image& stencil) {
     fillRect(out, e.x, top, swatch, swatch, stencilColour(static_cast<std::uint8_t>(e.value)));
     drawNumber(out, e.x + swatch + 3, top, e.value, scale, {255, 255, 255});
   }
+  return out;
+}
+
+Rgb countColour(int count, int top) {
+  // Anchors of rising luminance (about 31, 59, 86, 133, 192, 245): interpolating linearly between
+  // them keeps it rising, since luminance is linear in the channels.
+  static constexpr std::array<std::array<float, 3>, 6> kRamp = {
+      {{40, 20, 110}, {120, 30, 160}, {200, 50, 110}, {240, 110, 40}, {250, 190, 40}, {250, 250, 180}}};
+  if (count <= 0) return {0, 0, 0};
+  top = std::max(top, 1);
+  const float t =
+      top == 1 ? 1.0f : static_cast<float>(std::min(count, top) - 1) / static_cast<float>(top - 1);
+  const float at = t * static_cast<float>(kRamp.size() - 1);
+  const std::size_t i = std::min(static_cast<std::size_t>(at), kRamp.size() - 2);
+  const float f = at - static_cast<float>(i);
+  Rgb c;
+  for (std::size_t k = 0; k < 3; ++k)
+    c[k] = static_cast<std::uint8_t>(std::lround(kRamp[i][k] + f * (kRamp[i + 1][k] - kRamp[i][k])));
+  return c;
+}
+
+Rgb saturatedCountColour() {
+  return {0, 220, 255};
+}
+
+float luminance(const Rgb& c) {
+  return 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2];
+}
+
+Image countLegend(const std::vector<std::uint64_t>& histogram, int top, bool saturated, int width) {
+  top = std::max(top, 1);
+  const int scale = width >= 480 ? 2 : 1, margin = 3 * scale, barHeight = 16 * scale, strip = 4 * scale,
+            text = 5 * scale;
+  const int height = margin + barHeight + strip + 2 * scale + text + margin;
+  Image out(std::max(width, 1), height, 4);
+  fillRect(out, 0, 0, out.width, out.height, {48, 48, 48});
+  const auto pixels = [&](int k) {
+    return static_cast<std::size_t>(k) < histogram.size() ? histogram[static_cast<std::size_t>(k)] : 0;
+  };
+  std::uint64_t most = 1;
+  for (int k = 0; k <= top; ++k) most = std::max(most, pixels(k));
+  if (saturated) most = std::max(most, pixels(255));
+  // The saturated column sits apart at the right, as wide as its label.
+  const int satWidth = saturated ? textWidth("255+", scale) + 2 * scale : 0;
+  const int x0 = margin, x1 = out.width - margin - (saturated ? satWidth + 3 * margin : 0);
+  const int columns = top + 1;
+  const auto columnX = [&](int k) { return x0 + (x1 - x0) * k / columns; };
+  const int stripTop = margin + barHeight, labelTop = stripTop + strip + 2 * scale;
+  const auto column = [&](int left, int right, std::uint64_t n, Rgb c) {
+    // A bar for every count present, at least a pixel tall, on a log scale: a count a handful of
+    // pixels have still shows beside one that most have.
+    const int bar =
+        n == 0 ? 0
+               : std::max(1, static_cast<int>(std::lround(barHeight * std::log1p(static_cast<double>(n)) /
+                                                          std::log1p(static_cast<double>(most)))));
+    fillRect(out, left, stripTop - bar, right - left, bar, c);
+    fillRect(out, left, stripTop, right - left, strip, c);
+  };
+  for (int k = 0; k <= top; ++k)
+    column(columnX(k), std::max(columnX(k + 1), columnX(k) + 1), pixels(k), countColour(k, top));
+  fillRect(out, x0, stripTop + strip, x1 - x0, 1, {200, 200, 200});
+  // Labels: top always, and the multiples of a round step (1, 2, 5, 10, 20, 50, 100) far enough
+  // apart to read, dropping those that would touch top's.
+  const auto labelLeft = [&](int k) {
+    const std::string label = std::to_string(k);
+    const int centre = (columnX(k) + std::max(columnX(k + 1), columnX(k) + 1)) / 2;
+    return std::clamp(centre - textWidth(label, scale) / 2, 0, out.width - textWidth(label, scale));
+  };
+  const int widest = textWidth(std::to_string(top), scale) + 3 * scale;
+  int step = 1;
+  for (const int s : {1, 2, 5, 10, 20, 50, 100, 200}) {
+    step = s;
+    if (columnX(s) - columnX(0) >= widest) break;
+  }
+  const int topLeft = labelLeft(top);
+  drawText(out, topLeft, labelTop, std::to_string(top), scale, {255, 255, 255});
+  for (int k = 0; k < top; k += step) {
+    const int left = labelLeft(k);
+    if (left + textWidth(std::to_string(k), scale) + 2 * scale > topLeft) break;
+    drawText(out, left, labelTop, std::to_string(k), scale, {255, 255, 255});
+  }
+  if (saturated) {
+    const int left = out.width - margin - satWidth;
+    column(left, left + satWidth, pixels(255), saturatedCountColour());
+    drawText(out, left + scale, labelTop, "255+", scale, saturatedCountColour());
+  }
+  return out;
+}
+
+Image countPicture(const Image& stencil, bool saturates) {
+  std::vector<std::uint64_t> histogram(256, 0);
+  for (std::uint8_t v : stencil.pixels) ++histogram[v];
+  int top = 1;
+  for (int k = 1; k < 256; ++k)
+    if (histogram[static_cast<std::size_t>(k)] > 0 && !(saturates && k == 255)) top = k;
+  const bool saturated = saturates;
+  const Image legend = countLegend(histogram, top, saturated, stencil.width);
+  Image out(stencil.width, stencil.height + legend.height, 4);
+  for (int py = 0; py < stencil.height; ++py)
+    for (int px = 0; px < stencil.width; ++px) {
+      const int v = *stencil.at(px, py);
+      fillRect(out, px, py, 1, 1, saturates && v == 255 ? saturatedCountColour() : countColour(v, top));
+    }
+  for (int py = 0; py < legend.height; ++py)
+    std::copy_n(legend.at(0, py), 4 * legend.width, out.at(0, stencil.height + py));
   return out;
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "gl/image.h"
 
@@ -17,5 +18,26 @@ Image stencilRamp(const Image& stencil);
 
 // The eight bit planes side by side (4 x 2 tiles, bit 0 top left): white where set.
 Image stencilBitPlanes(const Image& stencil);
+
+// Depth complexity's colours (lesson 13): a count of 0 is black, 1..top run along one ramp from
+// dark indigo through crimson and orange to pale yellow whose luminance rises with the count, so a
+// larger count always looks brighter; counts above top show as top. The saturated count (255 for a
+// stencil that stops there, INCR) has a colour of its own off the ramp, cyan: "this many or more".
+// top >= 1.
+std::array<std::uint8_t, 3> countColour(int count, int top);
+std::array<std::uint8_t, 3> saturatedCountColour();
+// Rec. 709 luminance of an sRGB byte triple, 0..255 (the ramp's monotone measure).
+float luminance(const std::array<std::uint8_t, 3>&);
+
+// The legend of a count picture as a band `width` pixels wide: for every count 0..top a column in
+// its colour, a bar above it for its pixels (histogram[k] pixels have count k) on a log scale, the
+// tallest the most common count, the counts written under the columns (as many as fit,
+// 0 and top always), and, when `saturated` is set, a cyan column apart labelled "255+" with its own
+// bar (histogram[255]). top is the largest count in the ramp; histogram has 256 entries or fewer.
+Image countLegend(const std::vector<std::uint64_t>& histogram, int top, bool saturated, int width);
+
+// A stencil of counts as a picture: each value in countColour (255 in cyan when `saturates`), the
+// ramp's top the largest value present (other than a saturated 255), and countLegend below.
+Image countPicture(const Image& stencil, bool saturates);
 
 }  // namespace stencil

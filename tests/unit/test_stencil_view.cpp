@@ -43,3 +43,82 @@ TEST(StencilView, BitPlanesShowEachBitInItsTile) {
     EXPECT_EQ(pic.at(x, y)[0], set ? 255 : 0) << "bit " << bit;
   }
 }
+
+// Lesson 13's count colours: a larger count always looks brighter, for any top, and adjacent
+// counts stay apart while the ramp is short (the GLUT demo's map showed 3 brighter than 4 and
+// everything from 8 up white).
+TEST(CountView, LuminanceRisesWithTheCountForAnyTop) {
+  for (int top : {1, 2, 3, 7, 8, 16, 100, 254}) {
+    EXPECT_EQ(countColour(0, top), (std::array<std::uint8_t, 3>{0, 0, 0}));
+    for (int k = 1; k <= top; ++k)
+      EXPECT_GT(luminance(countColour(k, top)), luminance(countColour(k - 1, top))) << k << " of " << top;
+    EXPECT_EQ(countColour(top + 5, top), countColour(top, top));  // past top: top's colour
+  }
+  // 1..16 over five segments, three steps each; the flattest segment rises 27.5 levels of
+  // luminance (about 31 to 59), 9.2 a step, less up to one level for rounding to bytes.
+  for (int k = 1; k <= 16; ++k)
+    EXPECT_GE(luminance(countColour(k, 16)) - luminance(countColour(k - 1, 16)), 8.0f) << k;
+}
+
+TEST(CountView, SaturatedIsOffTheRamp) {
+  const auto cyan = saturatedCountColour();
+  for (int top : {1, 8, 254})
+    for (int k = 0; k <= top; ++k) {
+      const auto c = countColour(k, top);
+      EXPECT_NE(c, cyan);
+      if (k > 0) {
+        EXPECT_GE(c[0], 40);  // every count above 0 has red in it; cyan has none
+      }
+    }
+  EXPECT_EQ(cyan[0], 0);
+}
+
+TEST(CountView, PictureColoursEachCountAndTheLegendShowsTheHistogram) {
+  Image s(64, 8, 1);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 64; ++x) *s.at(x, y) = static_cast<std::uint8_t>(x < 16 ? 0 : x < 48 ? 3 : 255);
+  const Image saturating = countPicture(s, true);
+  EXPECT_EQ(saturating.width, 64);
+  EXPECT_GT(saturating.height, 8);
+  const auto pixel = [](const Image& img, int x, int y) {
+    return std::array<std::uint8_t, 3>{img.at(x, y)[0], img.at(x, y)[1], img.at(x, y)[2]};
+  };
+  EXPECT_EQ(pixel(saturating, 20, 3), countColour(3, 3));  // top is 3: 255 is saturated, not a count
+  EXPECT_EQ(pixel(saturating, 60, 3), saturatedCountColour());
+  EXPECT_EQ(pixel(saturating, 2, 3), (std::array<std::uint8_t, 3>{0, 0, 0}));
+  // Wrapping: 255 is a count like any other, the top of the ramp.
+  const Image wrapping = countPicture(s, false);
+  EXPECT_EQ(pixel(wrapping, 60, 3), countColour(255, 255));
+  EXPECT_EQ(pixel(wrapping, 20, 3), countColour(3, 255));
+
+  // The legend: count 3's bar (32 pixels) stands taller than count 1's (none) and as tall as the
+  // tallest; the saturated column is drawn only when asked for.
+  std::vector<std::uint64_t> histogram(256, 0);
+  histogram[0] = 16, histogram[3] = 32, histogram[255] = 16;
+  const auto barHeight = [&](const Image& legend, int column, int top) {
+    const auto colour = countColour(column, top);
+    int height = 0;
+    for (int y = 0; y < legend.height; ++y)
+      for (int x = 0; x < legend.width; ++x)
+        if (pixel(legend, x, y) == colour) {
+          int h = 0;
+          while (y + h < legend.height && pixel(legend, x, y + h) == colour) ++h;
+          height = std::max(height, h);
+          break;
+        }
+    return height;
+  };
+  const Image legend = countLegend(histogram, 3, true, 200);
+  EXPECT_GT(barHeight(legend, 3, 3), barHeight(legend, 1, 3));
+  bool cyanSeen = false;
+  for (std::size_t i = 0; i + 3 < legend.pixels.size(); i += 4)
+    cyanSeen |= std::array<std::uint8_t, 3>{legend.pixels[i], legend.pixels[i + 1], legend.pixels[i + 2]} ==
+                saturatedCountColour();
+  EXPECT_TRUE(cyanSeen);
+  const Image plain = countLegend(histogram, 3, false, 200);
+  bool cyanInPlain = false;
+  for (std::size_t i = 0; i + 3 < plain.pixels.size(); i += 4)
+    cyanInPlain |= std::array<std::uint8_t, 3>{plain.pixels[i], plain.pixels[i + 1], plain.pixels[i + 2]} ==
+                   saturatedCountColour();
+  EXPECT_FALSE(cyanInPlain);
+}

@@ -1,0 +1,139 @@
+// Lesson 13's claims, measured on its output: fragments that pass the depth test and those that
+// fail it add up to every fragment, pixel for pixel; every fragment equals the CPU count of the
+// surfaces each pixel's ray crosses (front faces only with culling), on the lesson's scene and on
+// scene files; the histogram --stats prints is the stencil's own; and past 255 INCR stops (the
+// picture says so in cyan) while INCR_WRAP wraps.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "gl/stencil_view.h"
+#include "lesson_run.h"
+
+using namespace stencil;
+using stencil::testing::LessonRun;
+
+namespace {
+
+std::optional<LessonRun> run(const std::string& name, const std::string& args, bool stats = false) {
+  return stencil::testing::runLesson(LESSON_13, name, args, stats);
+}
+
+// The samples_passed of the first pass with this name, from the --stats JSON.
+long long passSamples(const std::string& stats, const std::string& pass) {
+  const auto at = stats.find("{\"name\": \"" + pass + "\"");
+  return std::stoll(stats.substr(stats.find("\"samples_passed\": ", at) + 18));
+}
+
+// The oracle's verdict: every disagreement on an edge of the ray count's picture, and few of those.
+void expectRayCountAgrees(const LessonRun& r, const std::string& what) {
+  ASSERT_GT(r.count("oracle_pixels"), 0) << what;
+  EXPECT_EQ(r.count("oracle_disagreements"), r.count("oracle_on_edges")) << what;
+  EXPECT_LT(r.count("oracle_on_edges"), r.count("oracle_pixels") / 100) << what;
+}
+
+}  // namespace
+
+TEST(DepthComplexity, PassedPlusFailedIsEveryFragment) {
+  for (const char* cull : {"0", "1"}) {
+    const std::string c = std::string(" --set cull=") + cull;
+    const auto all = run("all", "--variant all" + c);
+    if (!all) GTEST_SKIP() << "no GL context";
+    const auto passed = run("passed", "--variant depth-pass" + c);
+    const auto failed = run("failed", "--variant depth-fail" + c);
+    const auto both = run("both", "--variant both-outcomes" + c);
+    std::size_t wrong = 0, hidden = 0;
+    for (std::size_t i = 0; i < all->stencil.pixels.size(); ++i) {
+      wrong += passed->stencil.pixels[i] + failed->stencil.pixels[i] != all->stencil.pixels[i];
+      hidden += failed->stencil.pixels[i] > 0;
+    }
+    EXPECT_EQ(wrong, 0u) << "cull " << cull;
+    EXPECT_GT(hidden, 0u) << "cull " << cull;  // the scene hides something, in its draw order
+    EXPECT_EQ(both->stencil.pixels, all->stencil.pixels) << "cull " << cull;
+  }
+}
+
+TEST(DepthComplexity, EveryFragmentIsTheRayCount) {
+  for (const char* variant : {"all", "all-culled", "both-outcomes"}) {
+    const auto r = run(variant, std::string("--variant ") + variant + " --set oracle=1", true);
+    if (!r) GTEST_SKIP() << "no GL context";
+    expectRayCountAgrees(*r, variant);
+  }
+  // Culling drops the back faces: fewer fragments, the same pixels covered.
+  const auto all = run("all", "--variant all", true);
+  const auto culled = run("culled", "--variant all-culled", true);
+  EXPECT_LT(culled->count("counted_fragments"), all->count("counted_fragments"));
+  EXPECT_EQ(culled->count("covered_pixels"), all->count("covered_pixels"));
+}
+
+TEST(DepthComplexity, TheHistogramIsTheStencils) {
+  const auto r = run("all", "--variant all", true);
+  if (!r) GTEST_SKIP() << "no GL context";
+  std::vector<long long> histogram(256, 0);
+  for (std::uint8_t v : r->stencil.pixels) ++histogram[v];
+  long long largest = 0, fragments = 0;
+  for (int k = 0; k < 256; ++k) {
+    const long long reported = r->count("histogram." + std::to_string(k));
+    EXPECT_EQ(reported < 0 ? 0 : reported, histogram[static_cast<std::size_t>(k)]) << "count " << k;
+    if (histogram[static_cast<std::size_t>(k)] > 0) largest = k;
+    fragments += k * histogram[static_cast<std::size_t>(k)];
+  }
+  EXPECT_EQ(r->count("max_count"), largest);
+  EXPECT_GE(largest, 6);  // the nested cubes alone are six deep
+  EXPECT_EQ(r->count("counted_fragments"), fragments);
+  // With the depth test off every fragment of the count pass passes its occlusion query.
+  EXPECT_EQ(passSamples(r->stats, "count"), fragments);
+}
+
+// 300 quads one behind the other: INCR stops at 255, and the picture shows those pixels in the
+// saturated colour; INCR_WRAP leaves 300 - 256 = 44 where all 300 overlap. The ray count, stopped
+// or wrapped the same way, agrees with both.
+TEST(DepthComplexity, PastTwoHundredAndFiftyFive) {
+  const auto saturates = run("saturates", "--variant stack-saturates --set oracle=1", true);
+  if (!saturates) GTEST_SKIP() << "no GL context";
+  expectRayCountAgrees(*saturates, "stack-saturates");
+  const auto wraps = run("wraps", "--variant stack-wraps --set oracle=1", true);
+  expectRayCountAgrees(*wraps, "stack-wraps");
+  // Where INCR stopped at 255, INCR_WRAP holds what is left past 256: 0..44, and 44 where all
+  // 300 quads overlap.
+  std::size_t stopped = 0, wrapped = 0;
+  for (std::size_t i = 0; i < saturates->stencil.pixels.size(); ++i) {
+    if (saturates->stencil.pixels[i] != 255) continue;
+    ++stopped;
+    EXPECT_LE(wraps->stencil.pixels[i], 44);
+    wrapped += wraps->stencil.pixels[i] == 44;
+  }
+  EXPECT_GT(stopped, 1000u);
+  EXPECT_GT(wrapped, 0u);
+  EXPECT_EQ(saturates->count("saturated_pixels"), static_cast<long long>(stopped));
+  // The stored counts lose what INCR dropped: fewer than the fragments drawn.
+  EXPECT_LT(saturates->count("counted_fragments"), passSamples(saturates->stats, "count"));
+  // Every saturated pixel above the legend band shows the saturated colour.
+  const auto cyan = saturatedCountColour();
+  std::size_t saturatedAbove = 0, notCyan = 0;
+  for (std::size_t i = 0; i < 150u * 320u; ++i) {
+    if (saturates->stencil.pixels[i] != 255) continue;
+    ++saturatedAbove;
+    const std::uint8_t* p = &saturates->colour.pixels[4 * i];
+    notCyan += p[0] != cyan[0] || p[1] != cyan[1] || p[2] != cyan[2];
+  }
+  EXPECT_GT(saturatedAbove, 1000u);
+  EXPECT_EQ(notCyan, 0u);
+}
+
+// Scene files (lessons 15-16's format): the ray count agrees with every fragment, with and without
+// culling; the mirrored view turns the front faces round, which culling must follow.
+TEST(DepthComplexity, SceneFilesAgreeWithTheRayCount) {
+  for (const char* file :
+       {"builtin.scene", "two-lights.scene", "hard/mirrored-view.scene", "hard/open-mesh.scene"}) {
+    for (const char* cull : {"0", "1"}) {
+      const auto r =
+          run("scene",
+              std::string("--scene ") + SCENES_DIR + "/" + file + " --set oracle=1 --set cull=" + cull, true);
+      if (!r) GTEST_SKIP() << "no GL context";
+      expectRayCountAgrees(*r, std::string(file) + " cull " + cull);
+    }
+  }
+}
