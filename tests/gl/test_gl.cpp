@@ -107,6 +107,33 @@ TEST_F(Gl, RecorderCountsDrawsTrianglesAndFragments) {
   EXPECT_EQ(recorder.snapshots()[0].colour.at(10, 10)[0], 255);
 }
 
+// A new framebuffer's first measured frame: its GPU time is a real figure that fits inside the
+// pass's CPU wall time (which ends after glFinish), not the timer's raw timestamp.
+TEST_F(Gl, TheFirstFramesGpuTimeFitsInsideItsCpuTime) {
+  GLint timerBits = 0;
+  glGetQueryiv(GL_TIME_ELAPSED, GL_QUERY_COUNTER_BITS, &timerBits);
+  Framebuffer fb(64, 32);
+  Program flat("common/flat.vert", "common/flat.frag");
+  GpuMesh quad(makeScreenQuad());
+  PassRecorder recorder({"first"}, fb, context->features());
+  fb.bind();
+  recorder.beginFrame({.measure = true, .captureAll = false, .captureOnly = {}});  // no clear before it
+  flat.set("transform", glm::mat4(1));
+  flat.set("colour", glm::vec4(1));
+  quad.draw();
+  recorder.pass("first");
+  recorder.endFrame();
+  const PassStats& first = recorder.passStats().at(0);
+  if (timerBits == 0) {
+    EXPECT_FALSE(first.gpuMs.has_value());
+    EXPECT_FALSE(first.gpuMsNullReason.empty());
+    return;
+  }
+  ASSERT_TRUE(first.gpuMs.has_value()) << first.gpuMsNullReason;
+  EXPECT_GE(*first.gpuMs, 0.0);
+  EXPECT_LE(*first.gpuMs, first.cpuMs);
+}
+
 TEST_F(Gl, RecorderSumsALessonsOwnCountsPerFrame) {
   Framebuffer fb(8, 8);
   PassRecorder recorder({"only"}, fb, context->features());
