@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace stencil {
 
@@ -296,6 +297,89 @@ BoundingSphere worldBounds(const BoundingSphere& local, const glm::mat4& model) 
   const float scale = std::max(
       {glm::length(glm::vec3(model[0])), glm::length(glm::vec3(model[1])), glm::length(glm::vec3(model[2]))});
   return {glm::vec3(model * glm::vec4(local.center, 1.0f)), local.radius * scale};
+}
+
+std::vector<VolumeChoice> chooseVolumes(ShadowMethod method, const std::vector<BoundingSphere>& casters,
+                                        const glm::vec3& lightCentre, float radius,
+                                        const std::vector<Plane>& pyramid,
+                                        const std::vector<Plane>& frustum) {
+  std::vector<VolumeChoice> choices(casters.size());
+  bool anyInPyramid = false;
+  for (std::size_t c = 0; c < casters.size(); ++c) {
+    if (!std::isinf(radius) && culledByLight(lightCentre, radius, casters[c].center, casters[c].radius))
+      continue;
+    choices[c].shadowCase = shadowCase(pyramid, frustum, casters[c].center, casters[c].radius);
+    anyInPyramid |= choices[c].shadowCase != 1;
+  }
+  // Full z-fail (both caps of every volume) for Everitt-Kilgard, and for Lengyel once any caster
+  // is in the pyramid; z-pass only never.
+  const bool everittKilgard =
+      method == ShadowMethod::EverittKilgard || (method == ShadowMethod::Lengyel && anyInPyramid);
+  for (VolumeChoice& choice : choices) {
+    if (choice.shadowCase == 0) continue;
+    choice.zfail = method == ShadowMethod::McGuire ? choice.shadowCase != 1 : everittKilgard;
+    choice.fullCaps = everittKilgard;
+  }
+  return choices;
+}
+
+VolumeIndices casterVolume(const PreparedCaster& caster, const glm::vec4& light, const VolumeChoice& choice,
+                           bool lightCapOn, bool splitFan) {
+  VolumeIndices out;
+  CasterVolume& v = out.volume;
+  v.shadowCase = choice.shadowCase;
+  v.zfail = choice.zfail;
+  const Mesh& mesh = caster.mesh;
+  const std::vector<bool> lit = facesLight(mesh, light);
+  // An open mesh (a scene file's) blocks light with both sides of its faces: two volumes.
+  const bool twoSided = !caster.report.closed();
+  const std::vector<SilhouetteEdge> edges =
+      twoSided ? twoSidedSilhouetteEdges(caster.adjacency, lit) : silhouetteEdges(caster.adjacency, lit);
+  const bool directional = light.w == 0.0f;
+  const bool fullCaps = choice.fullCaps;
+  std::vector<std::uint32_t>& indices = out.indices;
+  indices = sideIndices(mesh, edges, directional);
+  v.sides = indices.size();
+  const bool lightCap = v.zfail && (fullCaps || (v.shadowCase == 3 && lightCapOn));
+  // The lit faces: the light cap, and what the fan's test for an enclosed light needs.
+  std::vector<std::uint32_t> cap;
+  if (lightCap || (v.zfail && !directional && !fullCaps)) cap = lightCapIndices(mesh, lit, twoSided);
+  if (v.zfail && !directional) {  // a directional light's far ends are one point: no dark cap
+    std::vector<std::uint32_t> dark;
+    if (fullCaps) {
+      dark = backFaceDarkCapIndices(mesh, lit, twoSided);
+    } else {
+      const glm::vec3 point = glm::vec3(light) / light.w;
+      DarkCap fan = fanDarkCap(mesh, edges, point, splitFan ? 179.0f : 361.0f);
+      // The fan is a whole sky off when it and the caster enclose the light (CPU work: O(f)).
+      v.spheres = std::abs(closeAroundLight(fan, mesh, cap, point));
+      dark = fan.indices;
+      out.split = fan.split;
+      v.splitTriangles = fan.splitTriangles;
+      v.splitVertices = out.split.size();
+    }
+    indices.insert(indices.end(), dark.begin(), dark.end());
+    v.darkCap = dark.size();
+  }
+  if (lightCap) {
+    indices.insert(indices.end(), cap.begin(), cap.end());
+    v.lightCap = cap.size();
+  }
+  for (const SilhouetteEdge& e : edges) indices.insert(indices.end(), {e.v0, e.v1});
+  v.silhouette = 2 * edges.size();
+  return out;
+}
+
+LightClip lightClip(const glm::vec4& light, float radius, bool bounds, const glm::mat4& view,
+                    const glm::mat4& projection, glm::ivec2 size) {
+  LightClip clip;
+  const bool point = light.w != 0.0f;
+  clip.radius = point && bounds ? radius : std::numeric_limits<float>::infinity();
+  clip.centre = point ? glm::vec3(light) / light.w : glm::vec3(0.0f);
+  clip.scissor = lightScissor(clip.centre, clip.radius, projection * view, size);
+  clip.depthBounds = !std::isinf(clip.radius);
+  if (clip.depthBounds) clip.depth = lightDepthBounds(clip.centre, clip.radius, view, projection);
+  return clip;
 }
 
 }  // namespace stencil

@@ -19,6 +19,7 @@
 
 #include "geometry/bounds.h"
 #include "geometry/mesh.h"
+#include "geometry/scene.h"
 #include "geometry/shadow_volume.h"
 
 namespace stencil {
@@ -145,5 +146,67 @@ DepthBounds lightDepthBounds(const glm::vec3& centre, float radius, const glm::m
 
 // The world bounding sphere of a mesh placed by a rigid model matrix.
 BoundingSphere worldBounds(const BoundingSphere& local, const glm::mat4& model);
+
+// ---- one caster's volume for one light, by method (lessons 13 and 16) --------------------------
+
+// The ways to build a light's volumes that lesson 16 offers:
+//   McGuire       per caster by its case: 1 z-pass with the sides alone, 2 z-fail with the fan
+//                 dark cap, 3 the same with the light cap;
+//   EverittKilgard  always z-fail, both caps of every volume (the faces away from the light at
+//                 infinity, the faces towards it as they are);
+//   Lengyel       z-pass for every caster while none is in the occlusion pyramid, else
+//                 Everitt-Kilgard's full z-fail for all of them;
+//   ZPass         z-pass for every caster, which fails with the eye in a shadow.
+enum class ShadowMethod { McGuire = 0, EverittKilgard = 1, Lengyel = 2, ZPass = 3 };
+
+// What one caster's volume is for one light: its case, z-pass or z-fail and which caps.
+struct VolumeChoice {
+  int shadowCase = 0;     // 1, 2 or 3 from the pyramid; 0 culled by the light's bounds
+  bool zfail = false;     // counted behind the scene, the volume closed at both ends
+  bool fullCaps = false;  // Everitt and Kilgard's caps (O(f)) rather than the fan and per-case cap
+};
+
+// The choice for every caster of one light, from their world bounding spheres. lightCentre and
+// radius are the light's bounds (radius infinite: unbounded, nothing culled). Lengyel's choice
+// needs every caster's case first: one in the pyramid turns all of them to full z-fail.
+std::vector<VolumeChoice> chooseVolumes(ShadowMethod method, const std::vector<BoundingSphere>& casters,
+                                        const glm::vec3& lightCentre, float radius,
+                                        const std::vector<Plane>& pyramid, const std::vector<Plane>& frustum);
+
+// What one caster draws for one light, as ranges of its index list (casterVolume).
+struct CasterVolume {
+  int shadowCase = 0;  // 1, 2 or 3 from the pyramid; 0 culled
+  bool zfail = false;
+  std::size_t sides = 0, darkCap = 0, lightCap = 0, silhouette = 0;  // index counts, in this order
+  std::size_t splitTriangles = 0, splitVertices = 0;  // split vertices include spheres' octahedra
+  int spheres = 0;                                    // whole spheres added to the fan
+};
+
+// One caster's volume for a light in the caster's own space, as indices into its
+// doubledVertexArray: sides, dark cap and light cap one after the other, then its silhouette as
+// lines; the split dark-cap triangles (and any spheres closeAroundLight adds) as vertices.
+// lightCap: draw the light cap of a case-3 caster (McGuire); splitFan: split fan triangles that
+// span 180 degrees or more. An open mesh blocks light with both sides of its faces: two volumes.
+struct VolumeIndices {
+  CasterVolume volume;
+  std::vector<std::uint32_t> indices;
+  std::vector<glm::vec4> split;
+};
+VolumeIndices casterVolume(const PreparedCaster& caster, const glm::vec4& light, const VolumeChoice& choice,
+                           bool lightCap = true, bool splitFan = true);
+
+// A light's bounds for one view: the sphere (radius infinite for a directional light or with
+// bounds off), its scissor rectangle (the whole window when unbounded; empty when off screen)
+// and the window depths it spans, for EXT_depth_bounds_test where `depthBounds` says it applies.
+struct LightClip {
+  glm::vec3 centre{0.0f};
+  float radius = 0.0f;
+  ScissorRect scissor;
+  bool depthBounds = false;  // bounded, so the depth range below means something
+  DepthBounds depth;
+  bool offScreen() const { return scissor.width <= 0 || scissor.height <= 0; }
+};
+LightClip lightClip(const glm::vec4& light, float radius, bool bounds, const glm::mat4& view,
+                    const glm::mat4& projection, glm::ivec2 size);
 
 }  // namespace stencil

@@ -19,18 +19,29 @@
 // The stencil has 8 bits: INCR stops at 255 and INCR_WRAP starts again at 0. A count of 255
 // after INCR means "255 or more", shown in a colour of its own off the ramp; a wrapped count is
 // silently wrong, which the 300-quad stack shows.
+//
+// The same count measures shadow volumes' fill (the `volumes` option): instead of the scene, each
+// light's shadow volumes, built as lesson 16 builds them for one of its methods (McGuire et al.,
+// Everitt-Kilgard, Lengyel, z-pass; geometry/fast_shadows.h and gl/doubled_caster.h), drawn with
+// INCR on both depth outcomes, under the light's scissor and depth bounds as that lesson draws
+// them. The count is then the fragments the stencil pass rasterizes per pixel, all lights
+// together: where McGuire et al.'s culling, per-case caps and bounds save fill, and how much.
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "geometry/depth_complexity.h"
+#include "geometry/fast_shadows.h"
 #include "geometry/scene.h"
 #include "geometry/shapes.h"
+#include "gl/doubled_caster.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
 #include "gl/overlay.h"
@@ -57,6 +68,23 @@ OrbitCamera alongTheStack() {
   return c;
 }
 
+// For the volumes' fill: the eye low in the nested cubes' shadow, looking past them at the spheres
+// and tori, so casters lie between the light and the near plane (cases 2 and 3) and the methods
+// differ; the far plane at infinity, where the volumes' far ends lie.
+OrbitCamera inTheCubesShadow() {
+  const glm::vec3 light(3.0f, 6.0f, 4.0f), cubeTop(-1.7f, 1.65f, -0.2f);
+  const glm::vec3 eye = light + 1.287f * (cubeTop - light), target(0.6f, 0.6f, 0.6f);
+  const glm::vec3 back = eye - target;
+  OrbitCamera c;
+  c.target = target;
+  c.distance = glm::length(back);
+  c.elevationDeg = glm::degrees(std::asin(back.y / c.distance));
+  c.azimuthDeg = glm::degrees(std::atan2(back.x, back.z));
+  c.fovyDeg = 70.0f;
+  c.farPlane = std::numeric_limits<float>::infinity();
+  return c;
+}
+
 LessonInfo lessonInfo() {
   LessonInfo info;
   info.id = "13-depth-complexity";
@@ -76,6 +104,12 @@ LessonInfo lessonInfo() {
       {"legend", 'L', "the legend: a column per count, its bar the share of pixels with that count", 1},
       {"wrap", 'W', "INCR_WRAP, which starts again at 0 after 255 (off: INCR, which stops at 255)", 0},
       {"stack", 'T', "a stack of 300 quads face on instead of the objects: counts past 255", 0},
+      {"volumes", 'F',
+       "count the shadow volumes' fill instead of the scene: every fragment of every light's volumes,\n"
+       "      built as lesson 16's method builds them: 0 off, 1 McGuire et al., 2 Everitt-Kilgard,\n"
+       "      3 Lengyel, 4 z-pass",
+       0, 4},
+      {"bounds", 'B', "volumes: the lights' bounds cull casters, scissor and depth-bound their volumes", 1},
       {"oracle", 'K',
        "check the stencil against a CPU count of the surfaces each pixel's ray crosses\n"
        "      (every fragment only; --stats reports oracle_*)",
@@ -102,6 +136,26 @@ LessonInfo lessonInfo() {
        {{"stack", 1}, {"wrap", 1}},
        {},
        alongTheStack()},
+      {"fill-mcguire",
+       "the shadow volumes' fill, McGuire et al.: per caster z-pass sides, or z-fail with a fan cap",
+       {{"volumes", 1}},
+       {},
+       inTheCubesShadow()},
+      {"fill-everitt-kilgard",
+       "the shadow volumes' fill, Everitt-Kilgard: every volume closed by both caps",
+       {{"volumes", 2}},
+       {},
+       inTheCubesShadow()},
+      {"fill-lengyel",
+       "the shadow volumes' fill, Lengyel: z-pass unless a caster is in the pyramid",
+       {{"volumes", 3}},
+       {},
+       inTheCubesShadow()},
+      {"fill-zpass",
+       "the shadow volumes' fill, z-pass: the sides alone",
+       {{"volumes", 4}},
+       {},
+       inTheCubesShadow()},
   };
   info.passes = {"scene", "count", "histogram", "show", "legend"};
   info.camera.target = {0.0f, 0.7f, 0.0f};
@@ -117,12 +171,20 @@ class DepthComplexity final : public Lesson {
   explicit DepthComplexity(const Scene* fromFile)
       : light_("common/light.vert", "common/light.frag"),
         flat_("common/flat.vert", "common/flat.frag"),
+        extrude_("common/extrude.vert", "common/flat.frag"),
         quadMesh_(makeScreenQuad()),
         quad_(quadMesh_) {
     scene_ = fromFile ? *fromFile : builtInScene();
     stack_ = stackScene();
     for (const Scene* s : {&scene_, &stack_})
       for (const SceneObject& o : s->objects) gpu_[&o.mesh] = std::make_unique<GpuMesh>(o.mesh);
+    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {  // the casters, as lesson 16 keeps them
+      SceneObject& o = scene_.objects[i];
+      if (!o.casts) continue;
+      if (o.caster.mesh.positions.empty()) o.caster = prepareCaster(o.mesh);
+      casters_.push_back(
+          {i, boundingSphereOf(o.caster.mesh.positions), std::make_unique<DoubledCaster>(o.caster.mesh)});
+    }
   }
 
   void render(Frame& f) override {
@@ -147,7 +209,8 @@ class DepthComplexity final : public Lesson {
     f.pass("scene");
 
     // 2. Count: the scene once more, into the stencil only.
-    glClear(GL_DEPTH_BUFFER_BIT);  // the depth test sees the scene arrive in draw order again
+    if (!f.on("volumes"))
+      glClear(GL_DEPTH_BUFFER_BIT);  // the depth test sees the scene arrive in draw order again
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // counting shows nothing yet
     glEnable(GL_STENCIL_TEST);
     glStencilMask(0xFF);                // all 8 bits count
@@ -168,8 +231,12 @@ class DepthComplexity final : public Lesson {
         glStencilOp(GL_KEEP, up, up);  // either way: every fragment, with the depth test on
         break;
     }
-    glDepthMask(GL_TRUE);  // depth is written as the scene's own draw writes it
-    drawFlat(f, scene);
+    if (f.on("volumes") && !f.on("stack")) {
+      drawVolumes(f, up);
+    } else {
+      glDepthMask(GL_TRUE);  // depth is written as the scene's own draw writes it
+      drawFlat(f, scene);
+    }
     f.pass("count");
 
     // 3. The histogram: pixels per count, by occlusion queries on full-screen quads.
@@ -216,7 +283,7 @@ class DepthComplexity final : public Lesson {
     glFrontFace(GL_CCW);
 
     report(f, histogram, largest, counted, covered);
-    if (f.on("oracle")) checkAgainstRayCount(f, scene);
+    if (f.on("oracle") && !f.on("volumes")) checkAgainstRayCount(f, scene);
   }
 
  private:
@@ -280,6 +347,71 @@ class DepthComplexity final : public Lesson {
       flat_.set("transform", f.projection * f.view * o.modelAt(f.time));
       gpu_.at(&o.mesh)->draw();
     }
+  }
+
+  // Every light's shadow volumes as lesson 16 draws them for the chosen method, every fragment
+  // counted: INCR on both depth outcomes, so the depth test (on, the scene's depth kept) discards
+  // nothing, and the count is what the stencil pass rasterizes. The scene's depth stays for the
+  // depth bounds test.
+  void drawVolumes(Frame& f, GLenum up) {
+    const auto method = static_cast<ShadowMethod>(f.option("volumes") - 1);
+    for (const char* name : {"lights_drawn", "lights_offscreen", "casters_culled", "casters_zfail",
+                             "volume_triangles", "depth_bounds_used"})
+      f.count(name, 0);
+    glEnable(GL_DEPTH_TEST);       // on, as the stencil pass has it; both outcomes count
+    glDepthFunc(GL_LESS);          // lesson 16's test: in front of the scene passes
+    glDepthMask(GL_FALSE);         // volumes are not surfaces
+    glDisable(GL_CULL_FACE);       // both faces of every volume are rasterized
+    glStencilOp(GL_KEEP, up, up);  // every fragment that reaches the stencil counts
+    const glm::mat4 viewProjection = f.projection * f.view;
+    const std::array<glm::vec3, 4> nearRect = nearRectangle(viewProjection);
+    const std::vector<Plane> frustum = viewFrustumPlanes(viewProjection);
+    std::vector<BoundingSphere> world;
+    for (const Caster& c : casters_)
+      world.push_back(worldBounds(c.bounds, scene_.objects[c.object].modelAt(f.time)));
+    extrude_.set("viewProjection", viewProjection);
+    extrude_.set("colour", glm::vec4(1.0f));
+    for (const SceneLight& light : scene_.lights) {
+      const LightClip clip =
+          lightClip(light.position, light.radius, f.on("bounds"), f.view, f.projection, f.size);
+      if (clip.offScreen()) {  // lesson 16 skips a light whose bounds are off screen
+        f.count("lights_offscreen");
+        continue;
+      }
+      f.count("lights_drawn");
+      glEnable(GL_SCISSOR_TEST);  // only the light's rectangle, as the method's stencil pass
+      glScissor(clip.scissor.x, clip.scissor.y, clip.scissor.width,
+                clip.scissor.height);  // the light's sphere on screen (the whole window unbounded)
+      const bool depthBounds = hasFeature(f.features, Feature::DepthBoundsTest) && clip.depthBounds;
+      if (depthBounds) {  // pixels whose surface lies outside the light's sphere are skipped
+        glEnable(GL_DEPTH_BOUNDS_TEST_EXT);  // as lesson 16 does, where the driver has it
+        glDepthBoundsEXT(clip.depth.nearest, clip.depth.farthest);  // the depths the sphere spans
+        f.count("depth_bounds_used");
+      }
+      const std::vector<VolumeChoice> choices = chooseVolumes(
+          method, world, clip.centre, clip.radius, occlusionPyramid(nearRect, light.position), frustum);
+      for (std::size_t c = 0; c < casters_.size(); ++c) {
+        if (choices[c].shadowCase == 0) {
+          f.count("casters_culled");
+          continue;
+        }
+        const SceneObject& o = scene_.objects[casters_[c].object];
+        const glm::mat4 model = o.modelAt(f.time);
+        const glm::vec4 local = glm::inverse(model) * light.position;  // the light in the caster's space
+        const VolumeIndices built = casterVolume(o.caster, local, choices[c]);
+        const CasterVolume& v = built.volume;
+        if (v.zfail) f.count("casters_zfail");
+        f.count("volume_triangles", (v.sides + v.darkCap + v.lightCap + v.splitVertices) / 3);
+        casters_[c].gpu->upload(built.indices, built.split);
+        extrude_.set("model", model);
+        extrude_.set("light", local);
+        casters_[c].gpu->draw(0, v.sides + v.darkCap + v.lightCap);
+        casters_[c].gpu->drawSplit();
+      }
+      if (depthBounds) glDisable(GL_DEPTH_BOUNDS_TEST_EXT);  // the next light has bounds of its own
+      glDisable(GL_SCISSOR_TEST);  // the next light's rectangle, or the whole window again
+    }
+    glDepthMask(GL_TRUE);  // GL's default again
   }
 
   void drawQuad(const glm::vec4& colour) {
@@ -385,12 +517,20 @@ class DepthComplexity final : public Lesson {
     f.count("oracle_expected_fragments", r.expectedTotal);
   }
 
-  Program light_, flat_;
+  // A shadow caster of the scene: its object, bounds in its own space, doubled vertices on the GPU.
+  struct Caster {
+    std::size_t object;
+    BoundingSphere bounds;
+    std::unique_ptr<DoubledCaster> gpu;
+  };
+
+  Program light_, flat_, extrude_;
   Mesh quadMesh_;
   GpuMesh quad_;
   Scene scene_, stack_;
   std::map<const Mesh*, std::unique_ptr<GpuMesh>> gpu_;
   ImageOverlay overlay_;
+  std::vector<Caster> casters_;
 };
 
 }  // namespace

@@ -42,6 +42,7 @@
 #include "geometry/scene.h"
 #include "geometry/shadow_volume.h"
 #include "geometry/shapes.h"
+#include "gl/doubled_caster.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
 #include "gl/recorder.h"
@@ -222,66 +223,6 @@ Scene builtInScene(int slices, bool many, bool moving) {
   return s;
 }
 
-// ---- the doubled vertex array on the GPU -------------------------------------------------------
-
-// One caster: its doubled vertices (static), an index buffer rewritten per light (sides, dark
-// cap, light cap one after the other), and the few split dark-cap triangles as vertices.
-class DoubledCaster {
- public:
-  explicit DoubledCaster(const Mesh& welded) {
-    const std::vector<glm::vec4> vertices = doubledVertexArray(welded);
-    glGenVertexArrays(2, vao_);
-    glGenBuffers(3, buffers_);
-    glBindVertexArray(vao_[0]);
-    glBindBuffer(GL_ARRAY_BUFFER, buffers_[0]);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(glm::vec4)),
-                 vertices.data(), GL_STATIC_DRAW);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[1]);
-    glBindVertexArray(vao_[1]);
-    glBindBuffer(GL_ARRAY_BUFFER, buffers_[2]);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
-    glBindVertexArray(0);
-  }
-  ~DoubledCaster() {
-    glDeleteVertexArrays(2, vao_);
-    glDeleteBuffers(3, buffers_);
-  }
-  DoubledCaster(const DoubledCaster&) = delete;
-  DoubledCaster& operator=(const DoubledCaster&) = delete;
-
-  void upload(const std::vector<std::uint32_t>& indices, const std::vector<glm::vec4>& split) {
-    glBindVertexArray(vao_[0]);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)),
-                 indices.data(), GL_STREAM_DRAW);
-    glBindBuffer(GL_ARRAY_BUFFER, buffers_[2]);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(split.size() * sizeof(glm::vec4)), split.data(),
-                 GL_STREAM_DRAW);
-    splitVertices_ = static_cast<GLsizei>(split.size());
-    glBindVertexArray(0);
-  }
-  // Indices [first, first + count) of the uploaded list, as triangles (or lines).
-  void draw(std::size_t first, std::size_t count, GLenum mode = GL_TRIANGLES) const {
-    if (count == 0) return;
-    glBindVertexArray(vao_[0]);
-    glDrawElements(mode, static_cast<GLsizei>(count), GL_UNSIGNED_INT,
-                   reinterpret_cast<const void*>(first * sizeof(std::uint32_t)));
-    countDraw(mode == GL_TRIANGLES ? count / 3 : 0);
-  }
-  void drawSplit() const {
-    if (splitVertices_ == 0) return;
-    glBindVertexArray(vao_[1]);
-    glDrawArrays(GL_TRIANGLES, 0, splitVertices_);
-    countDraw(static_cast<std::uint64_t>(splitVertices_ / 3));
-  }
-
- private:
-  GLuint vao_[2] = {0, 0}, buffers_[3] = {0, 0, 0};
-  GLsizei splitVertices_ = 0;
-};
-
 // The lesson's own framebuffer: a float (or 8-bit) colour target for the light sum and a packed
 // depth/stencil buffer like the framework's, so depth and stencil copy across unchanged.
 class AccumulationTarget {
@@ -329,22 +270,11 @@ class AccumulationTarget {
 
 // ---- the lesson ---------------------------------------------------------------------------------
 
-constexpr int kMcGuire = 0, kEverittKilgard = 1, kLengyel = 2;  // the method option; 3 is z-pass only
-
-// What one caster draws for one light, as ranges of its uploaded index list.
-struct CasterVolume {
-  int shadowCase = 0;  // 1, 2 or 3 from the pyramid; 0 culled
-  bool zfail = false;
-  std::size_t sides = 0, darkCap = 0, lightCap = 0, silhouette = 0;  // index counts, in this order
-  std::size_t splitTriangles = 0, splitVertices = 0;  // split vertices include spheres' octahedra
-  int spheres = 0;                                    // whole spheres added to the fan
-};
-
 class FastRobustShadows final : public Lesson {
  public:
   explicit FastRobustShadows(const Scene* fromFile)
       : light_("common/light.vert", "16-fast-robust-shadows/light.frag"),
-        extrude_("16-fast-robust-shadows/extrude.vert", "common/flat.frag"),
+        extrude_("common/extrude.vert", "common/flat.frag"),
         flat_("common/flat.vert", "common/flat.frag") {
     if (fromFile) setScene(*fromFile);
   }
@@ -385,29 +315,26 @@ class FastRobustShadows final : public Lesson {
     for (std::size_t k = 0; k < order.size(); ++k) {
       const SceneLight& light = scene_.lights[static_cast<std::size_t>(order[k])];
       const bool checked = k + 1 == order.size();
-      const bool point = light.position.w != 0.0f;
-      const float radius = point && f.on("bounds") ? light.radius : kInfinity;
-      const glm::vec3 lightCentre = point ? glm::vec3(light.position) / light.position.w : glm::vec3(0);
-      const ScissorRect rect = lightScissor(lightCentre, radius, viewProjection, f.size);
-      if (rect.width <= 0 || rect.height <= 0) {  // its bounds are off screen: it adds nothing
+      const LightClip clip =
+          lightClip(light.position, light.radius, f.on("bounds"), f.view, f.projection, f.size);
+      if (clip.offScreen()) {  // its bounds are off screen: it adds nothing
         f.count("lights_offscreen");
         continue;
       }
       f.count("lights_drawn");
-      glScissor(rect.x, rect.y, rect.width, rect.height);
+      glScissor(clip.scissor.x, clip.scissor.y, clip.scissor.width, clip.scissor.height);
 
       // The stencil cleared everywhere, so what the frame ends with is this light's alone.
       glStencilMask(0xFF);
       glClear(GL_STENCIL_BUFFER_BIT);
       glEnable(GL_SCISSOR_TEST);  // from here on only the light's rectangle is touched
-      const bool depthBounds = hasFeature(f.features, Feature::DepthBoundsTest) && !std::isinf(radius);
+      const bool depthBounds = hasFeature(f.features, Feature::DepthBoundsTest) && clip.depthBounds;
       if (depthBounds) {  // volumes skip pixels whose surface lies in front of or behind the sphere
-        const DepthBounds range = lightDepthBounds(lightCentre, radius, f.view, f.projection);
         glEnable(GL_DEPTH_BOUNDS_TEST_EXT);
-        glDepthBoundsEXT(range.nearest, range.farthest);
+        glDepthBoundsEXT(clip.depth.nearest, clip.depth.farthest);
       }
       f.count(depthBounds ? "depth_bounds_used" : "depth_bounds_skipped");
-      if (f.on("shadow")) drawShadows(f, light, lightCentre, radius, nearRect, frustum, checked);
+      if (f.on("shadow")) drawShadows(f, light, clip, nearRect, frustum, checked);
       if (depthBounds) glDisable(GL_DEPTH_BOUNDS_TEST_EXT);
       endPass(f, "shadows");
       f.shadowMask("light-" + std::to_string(order[k]));
@@ -517,29 +444,18 @@ class FastRobustShadows final : public Lesson {
 
   // ---- the shadow volumes of one light ------------------------------------------------------
 
-  void drawShadows(Frame& f, const SceneLight& light, const glm::vec3& lightCentre, float radius,
+  void drawShadows(Frame& f, const SceneLight& light, const LightClip& clip,
                    const std::array<glm::vec3, 4>& nearRect, const std::vector<Plane>& frustum,
                    bool checked) {
-    const int method = f.option("method");
     fillTime_ = f.time;
     fillLight_ = light.position;
-    const std::vector<Plane> pyramid = occlusionPyramid(nearRect, light.position);
     // Everything that decides each caster's volume first (Lengyel's choice needs all of them).
-    struct Choice {
-      int shadowCase = 0;  // 0 culled
-      BoundingSphere world;
-    };
-    std::vector<Choice> choices(casters_.size());
-    bool anyInPyramid = false;
-    for (std::size_t c = 0; c < casters_.size(); ++c) {
-      const SceneObject& o = scene_.objects[casters_[c].object];
-      choices[c].world = worldBounds(casters_[c].bounds, o.modelAt(f.time));
-      if (!std::isinf(radius) &&
-          culledByLight(lightCentre, radius, choices[c].world.center, choices[c].world.radius))
-        continue;
-      choices[c].shadowCase = shadowCase(pyramid, frustum, choices[c].world.center, choices[c].world.radius);
-      anyInPyramid |= choices[c].shadowCase != 1;
-    }
+    std::vector<BoundingSphere> world;
+    for (const Caster& c : casters_)
+      world.push_back(worldBounds(c.bounds, scene_.objects[c.object].modelAt(f.time)));
+    const std::vector<VolumeChoice> choices =
+        chooseVolumes(static_cast<ShadowMethod>(f.option("method")), world, clip.centre, clip.radius,
+                      occlusionPyramid(nearRect, light.position), frustum);
 
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // only the stencil changes
     glDepthMask(GL_FALSE);                                // volumes are not surfaces
@@ -551,21 +467,17 @@ class FastRobustShadows final : public Lesson {
     for (std::size_t c = 0; c < casters_.size(); ++c) {
       Caster& caster = casters_[c];
       const SceneObject& o = scene_.objects[caster.object];
-      CasterVolume v;
-      v.shadowCase = choices[c].shadowCase;
-      if (v.shadowCase == 0) {
+      if (choices[c].shadowCase == 0) {
         f.count("casters_culled");
-        if (checked) caster.volume = v;
+        if (checked) caster.volume = {};
         continue;
       }
-      f.count("casters_case" + std::to_string(v.shadowCase));
-      // Full z-fail (both caps of every volume) for Everitt-Kilgard, and for Lengyel once any caster
-      // is in the pyramid; z-pass only never.
-      const bool everittKilgard = method == kEverittKilgard || (method == kLengyel && anyInPyramid);
-      v.zfail = method == kMcGuire ? v.shadowCase != 1 : everittKilgard;
+      f.count("casters_case" + std::to_string(choices[c].shadowCase));
       const glm::mat4 model = o.modelAt(f.time);
       const glm::vec4 local = glm::inverse(model) * light.position;  // the light in the caster's space
-      buildVolume(f, caster, local, v, everittKilgard);
+      const VolumeIndices built = casterVolume(o.caster, local, choices[c], f.on("light-cap"), f.on("split"));
+      const CasterVolume& v = built.volume;
+      caster.gpu->upload(built.indices, built.split);
       if (v.zfail) f.count("casters_zfail");
       f.count("side_triangles", v.sides / 3);
       f.count("dark_cap_triangles", v.darkCap / 3 + v.splitVertices / 3);
@@ -612,50 +524,6 @@ class FastRobustShadows final : public Lesson {
     }
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);
-  }
-
-  // The indices of one caster's volume for a light in its own space: sides, dark cap and light
-  // cap one after the other, then its silhouette as lines (for the overlay).
-  void buildVolume(const Frame& f, Caster& caster, const glm::vec4& light, CasterVolume& v, bool fullCaps) {
-    const PreparedCaster& prepared = scene_.objects[caster.object].caster;
-    const Mesh& mesh = prepared.mesh;
-    const std::vector<bool> lit = facesLight(mesh, light);
-    // An open mesh (a scene file's) blocks light with both sides of its faces: two volumes.
-    const bool twoSided = !prepared.report.closed();
-    const std::vector<SilhouetteEdge> edges = twoSided ? twoSidedSilhouetteEdges(prepared.adjacency, lit)
-                                                       : silhouetteEdges(prepared.adjacency, lit);
-    const bool directional = light.w == 0.0f;
-    std::vector<std::uint32_t> indices = sideIndices(mesh, edges, directional);
-    v.sides = indices.size();
-    std::vector<glm::vec4> split;
-    const bool lightCap = v.zfail && (fullCaps || (v.shadowCase == 3 && f.on("light-cap")));
-    // The lit faces: the light cap, and what the fan's test for an enclosed light needs.
-    std::vector<std::uint32_t> cap;
-    if (lightCap || (v.zfail && !directional && !fullCaps)) cap = lightCapIndices(mesh, lit, twoSided);
-    if (v.zfail && !directional) {  // a directional light's far ends are one point: no dark cap
-      std::vector<std::uint32_t> dark;
-      if (fullCaps) {
-        dark = backFaceDarkCapIndices(mesh, lit, twoSided);
-      } else {
-        const glm::vec3 point = glm::vec3(light) / light.w;
-        DarkCap fan = fanDarkCap(mesh, edges, point, f.on("split") ? 179.0f : 361.0f);
-        // The fan is a whole sky off when it and the caster enclose the light (CPU work: O(f)).
-        v.spheres = std::abs(closeAroundLight(fan, mesh, cap, point));
-        dark = fan.indices;
-        split = fan.split;
-        v.splitTriangles = fan.splitTriangles;
-        v.splitVertices = split.size();
-      }
-      indices.insert(indices.end(), dark.begin(), dark.end());
-      v.darkCap = dark.size();
-    }
-    if (lightCap) {
-      indices.insert(indices.end(), cap.begin(), cap.end());
-      v.lightCap = cap.size();
-    }
-    for (const SilhouetteEdge& e : edges) indices.insert(indices.end(), {e.v0, e.v1});
-    v.silhouette = 2 * edges.size();
-    caster.gpu->upload(indices, split);
   }
 
   // ---- the scene -----------------------------------------------------------------------------

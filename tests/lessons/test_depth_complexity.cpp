@@ -2,7 +2,8 @@
 // fail it add up to every fragment, pixel for pixel; every fragment equals the CPU count of the
 // surfaces each pixel's ray crosses (front faces only with culling), on the lesson's scene and on
 // scene files; the histogram --stats prints is the stencil's own; and past 255 INCR stops (the
-// picture says so in cyan) while INCR_WRAP wraps.
+// picture says so in cyan) while INCR_WRAP wraps. Shadow volumes counted the same way add up to
+// the fill lesson 16 reports for each method, and light bounds cut it on a hall of many lights.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -136,4 +137,77 @@ TEST(DepthComplexity, SceneFilesAgreeWithTheRayCount) {
       expectRayCountAgrees(*r, std::string(file) + " cull " + cull);
     }
   }
+}
+
+namespace {
+
+// Every fragment of every light's shadow volumes, as lesson 16 reports it: the samples_passed of
+// all its volume-fill passes (one per light drawn), with --set fill=1.
+long long lessonSixteenFill(const std::string& stats) {
+  long long total = 0;
+  const std::string key = "{\"name\": \"volume-fill\"";
+  for (auto at = stats.find(key); at != std::string::npos; at = stats.find(key, at + 1))
+    total += std::stoll(stats.substr(stats.find("\"samples_passed\": ", at) + 18));
+  return total;
+}
+
+const char* const kMethods[] = {"mcguire", "everitt-kilgard", "lengyel", "zpass"};
+
+}  // namespace
+
+// The volumes' fill counted per pixel in the stencil adds up to the fragments lesson 16's fill
+// pass rasterizes, for each method, with the light bounds on and off. Lesson 16's fill pass has
+// no depth bounds test; where the driver has EXT_depth_bounds_test, lesson 13's count (which
+// uses it, as the stencil pass does) can only be smaller.
+TEST(DepthComplexity, ShadowVolumeFillIsLessonSixteensFill) {
+  for (const char* file :
+       {"builtin.scene", "hard/light-in-open-container.scene", "interior-many-lights.scene"}) {
+    const std::string scene = std::string("--scene ") + SCENES_DIR + "/" + file;
+    for (int method = 0; method < 4; ++method) {
+      for (const char* bounds : {"1", "0"}) {
+        const std::string set = std::string(" --set bounds=") + bounds;
+        const std::string name = std::string(kMethods[method]) + "-" + bounds;
+        const auto counted = run(name, scene + set + " --set volumes=" + std::to_string(method + 1), true);
+        if (!counted) GTEST_SKIP() << "no GL context";
+        const auto reported = stencil::testing::runLesson(
+            LESSON_16, name + "-16", scene + set + " --set fill=1 --set method=" + std::to_string(method),
+            true);
+        ASSERT_TRUE(reported);
+        const std::string what = std::string(file) + ", " + kMethods[method] + ", bounds " + bounds;
+        EXPECT_EQ(counted->count("saturated_pixels"), 0) << what;
+        EXPECT_GT(counted->count("counted_fragments"), 0) << what;
+        const long long fill = lessonSixteenFill(reported->stats);
+        if (counted->count("depth_bounds_used") > 0) {
+          EXPECT_LE(counted->count("counted_fragments"), fill) << what;
+        } else {
+          EXPECT_EQ(counted->count("counted_fragments"), fill) << what;
+        }
+      }
+    }
+  }
+}
+
+// Sixteen attenuated lights in a hall: the lights' bounds (culling and scissor) cut every
+// method's fill, McGuire et al.'s per-case caps cut it below Everitt and Kilgard's, and the
+// paper's system rasterizes less than half of what Everitt and Kilgard's unbounded volumes do.
+TEST(DepthComplexity, LightBoundsCutTheInteriorsFill) {
+  const std::string scene = std::string("--scene ") + SCENES_DIR + "/interior-many-lights.scene";
+  long long fill[4][2];
+  for (int method = 0; method < 4; ++method)
+    for (int bounds = 0; bounds < 2; ++bounds) {
+      const auto r = run(
+          std::string(kMethods[method]) + "-" + std::to_string(bounds),
+          scene + " --set volumes=" + std::to_string(method + 1) + " --set bounds=" + std::to_string(bounds),
+          true);
+      if (!r) GTEST_SKIP() << "no GL context";
+      fill[method][bounds] = r->count("counted_fragments");
+      if (bounds == 1) {
+        EXPECT_GT(r->count("casters_culled"), 0) << kMethods[method];
+      }
+    }
+  for (int method = 0; method < 4; ++method)
+    EXPECT_LT(2 * fill[method][1], fill[method][0]) << kMethods[method];
+  EXPECT_LT(fill[0][1], fill[1][1]);
+  EXPECT_LT(fill[0][0], fill[1][0]);
+  EXPECT_LT(2 * fill[0][1], fill[1][0]);
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
+#include <limits>
 #include <map>
 #include <utility>
 
@@ -321,3 +322,79 @@ TEST(WorldBounds, FollowsARigidMotion) {
 }
 
 }  // namespace
+
+namespace {
+
+// A camera at the origin looking down -z, a point light behind it: a caster between them is in
+// the occlusion pyramid (case 2), one in front of the camera is not (case 1), one far off the
+// light's bounds is culled.
+std::vector<VolumeChoice> choicesFor(ShadowMethod method, float radius) {
+  const glm::mat4 vp = cameraAtOrigin();
+  const glm::vec4 light(0, 0, 10, 1);
+  const std::vector<BoundingSphere> casters = {{{0, 0, 5}, 0.5f}, {{0, 0, -5}, 0.5f}, {{40, 0, -5}, 0.5f}};
+  return chooseVolumes(method, casters, glm::vec3(light), radius, occlusionPyramid(nearRectangle(vp), light),
+                       viewFrustumPlanes(vp));
+}
+
+}  // namespace
+
+TEST(ChooseVolumes, EachMethodsChoicePerCaster) {
+  const float unbounded = std::numeric_limits<float>::infinity();
+  {
+    const auto c = choicesFor(ShadowMethod::McGuire, 20.0f);
+    EXPECT_EQ(c[0].shadowCase, 2);
+    EXPECT_TRUE(c[0].zfail);
+    EXPECT_FALSE(c[0].fullCaps);
+    EXPECT_EQ(c[1].shadowCase, 1);
+    EXPECT_FALSE(c[1].zfail);
+    EXPECT_EQ(c[2].shadowCase, 0);  // beyond the light's reach
+  }
+  EXPECT_EQ(choicesFor(ShadowMethod::McGuire, unbounded)[2].shadowCase, 1);  // no bounds, no culling
+  for (const VolumeChoice& v : choicesFor(ShadowMethod::EverittKilgard, unbounded)) {
+    EXPECT_TRUE(v.zfail);
+    EXPECT_TRUE(v.fullCaps);
+  }
+  for (const VolumeChoice& v : choicesFor(ShadowMethod::Lengyel, unbounded)) {  // one in the pyramid: all
+    EXPECT_TRUE(v.zfail);
+    EXPECT_TRUE(v.fullCaps);
+  }
+  for (const VolumeChoice& v : choicesFor(ShadowMethod::ZPass, unbounded)) EXPECT_FALSE(v.zfail);
+}
+
+TEST(CasterVolume, RangesFollowTheChoice) {
+  const PreparedCaster cube = prepareCaster(makeCube(0.5f));
+  const glm::vec4 light(0.3f, 3.0f, 0.2f, 1.0f);
+  const VolumeIndices zpass = casterVolume(cube, light, {1, false, false});
+  EXPECT_EQ(zpass.volume.sides, 4u * 6u);  // four silhouette edges, a quad each
+  EXPECT_EQ(zpass.volume.darkCap + zpass.volume.lightCap, 0u);
+  EXPECT_EQ(zpass.indices.size(), zpass.volume.sides + zpass.volume.silhouette);
+  const VolumeIndices fan = casterVolume(cube, light, {3, true, false});
+  EXPECT_EQ(fan.volume.darkCap, 3u * 2u);   // four edges, the apex's two left out
+  EXPECT_EQ(fan.volume.lightCap, 3u * 2u);  // the top face
+  EXPECT_EQ(casterVolume(cube, light, {3, true, false}, false).volume.lightCap, 0u);
+  const VolumeIndices full = casterVolume(cube, light, {1, true, true});
+  EXPECT_EQ(full.volume.darkCap, 3u * 10u);  // the five faces away from the light
+  EXPECT_EQ(full.volume.lightCap, 3u * 2u);
+  std::vector<std::uint32_t> closed(
+      full.indices.begin(),
+      full.indices.begin() +
+          static_cast<std::ptrdiff_t>(full.volume.sides + full.volume.darkCap + full.volume.lightCap));
+  EXPECT_TRUE(closedSurface(closed));
+}
+
+TEST(LightClip, BoundedOrNot) {
+  const glm::mat4 projection = cameraAtOrigin(), view(1.0f);
+  const glm::ivec2 size(200, 100);
+  const LightClip bounded = lightClip({0, 0, -10, 1}, 1.0f, true, view, projection, size);
+  EXPECT_TRUE(bounded.depthBounds);
+  EXPECT_LT(bounded.scissor.width, 200);
+  EXPECT_LT(bounded.depth.nearest, bounded.depth.farthest);
+  const LightClip off = lightClip({0, 0, -10, 1}, 1.0f, false, view, projection, size);
+  EXPECT_FALSE(off.depthBounds);
+  EXPECT_EQ(off.scissor.width, 200);
+  EXPECT_EQ(off.scissor.height, 100);
+  const LightClip directional = lightClip({0, 1, 0, 0}, 1.0f, true, view, projection, size);
+  EXPECT_TRUE(std::isinf(directional.radius));
+  EXPECT_FALSE(directional.offScreen());
+  EXPECT_TRUE(lightClip({0, 0, 10, 1}, 1.0f, true, view, projection, size).offScreen());  // behind the eye
+}
