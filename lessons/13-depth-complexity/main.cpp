@@ -208,8 +208,10 @@ class DepthComplexity final : public Lesson {
     drawShaded(f, scene);
     f.pass("scene");
 
-    // 2. Count: the scene once more, into the stencil only.
-    if (!f.on("volumes"))
+    // 2. Count: the scene once more, into the stencil only. Shadow volumes are counted against the
+    // scene's depth, as the shadow pass meets it; the scene's own surfaces against an empty one.
+    const bool countVolumes = f.on("volumes") && !f.on("stack");
+    if (!countVolumes)
       glClear(GL_DEPTH_BUFFER_BIT);  // the depth test sees the scene arrive in draw order again
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // counting shows nothing yet
     glEnable(GL_STENCIL_TEST);
@@ -231,17 +233,18 @@ class DepthComplexity final : public Lesson {
         glStencilOp(GL_KEEP, up, up);  // either way: every fragment, with the depth test on
         break;
     }
-    if (f.on("volumes") && !f.on("stack")) {
+    if (countVolumes) {
       drawVolumes(f, up);
     } else {
-      glDepthMask(GL_TRUE);  // depth is written as the scene's own draw writes it
+      glDepthMask(
+          GL_TRUE);  // as in the scene's draw: with the depth test on, later fragments meet earlier ones
       drawFlat(f, scene);
     }
     f.pass("count");
 
     // 3. The histogram: pixels per count, by occlusion queries on full-screen quads.
-    glDisable(GL_DEPTH_TEST);  // the quads cover every pixel whatever lies there
-    glDisable(GL_CULL_FACE);
+    glDisable(GL_DEPTH_TEST);                // the quads cover every pixel whatever lies there
+    glDisable(GL_CULL_FACE);                 // a quad counts its pixels whichever way it faces
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);  // the counts stay as they are
     const bool saturates = !f.on("wrap");
     std::vector<std::uint64_t> histogram(256, 0);
@@ -269,8 +272,8 @@ class DepthComplexity final : public Lesson {
       }
     }
     glDisable(GL_STENCIL_TEST);                       // the counts stay for --stencil-out and the tests
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);  // GL's defaults again
-    glEnable(GL_DEPTH_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);  // colour writes on again
+    glEnable(GL_DEPTH_TEST);                          // the depth test as the frame began it
     f.pass("show");
 
     // 5. The legend along the bottom: the ramp, the histogram as bars, and 255+ where INCR stops.

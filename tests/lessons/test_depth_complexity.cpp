@@ -124,6 +124,16 @@ TEST(DepthComplexity, PastTwoHundredAndFiftyFive) {
   EXPECT_EQ(notCyan, 0u);
 }
 
+// The stack stands in for the shadow volumes: with `volumes` on too, its depth-pass count is the
+// stack's own, against an empty depth buffer, not against the shaded scene's depth.
+TEST(DepthComplexity, TheStackCountsTheSameWithVolumesOn) {
+  const auto alone = run("stack-alone", "--set stack=1 --set count=1");
+  const auto withVolumes = run("stack-volumes", "--set stack=1 --set count=1 --set volumes=1");
+  if (!alone || !withVolumes) GTEST_SKIP() << "no GL context";
+  EXPECT_EQ(withVolumes->stencil.pixels, alone->stencil.pixels);
+  EXPECT_GT(std::count(alone->stencil.pixels.begin(), alone->stencil.pixels.end(), 1), 1000);
+}
+
 // Scene files (lessons 15-16's format): the ray count agrees with every fragment, with and without
 // culling; the mirrored view turns the front faces round, which culling must follow.
 TEST(DepthComplexity, SceneFilesAgreeWithTheRayCount) {
