@@ -80,6 +80,10 @@ struct LessonInfo {
   // With --scene FILE its max becomes the file's light count - 1, before the options are checked,
   // so a light the file does not have is refused.
   std::string sceneLightOption;
+  // Whether the lesson makes shadow claims (overrides Lesson::shadowCheck or calls
+  // Frame::shadowMask): only then do --oracle and, for scene lessons, --mask-out apply. Without
+  // it they are refused, and --help does not list them.
+  bool shadows = false;
 };
 
 class PassRecorder;
