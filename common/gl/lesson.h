@@ -164,8 +164,8 @@ int runLesson(const LessonInfo&, const LessonFactory&, int argc, char** argv);
 using SceneLessonFactory = std::function<std::unique_ptr<Lesson>(const Scene* fromFile)>;
 
 // runLesson for such lessons: also takes --scene FILE (its camera replaces the lesson's and the
-// variants'; a file that cannot be read is one line "FILE:LINE: ...", exit 2) and --mask-out DIR
-// (Frame::shadowMask).
+// variants'; a file that cannot be read is one line "FILE:LINE: ...", exit 2) and, where the
+// lesson makes shadow claims (LessonInfo::shadows), --mask-out DIR (Frame::shadowMask).
 int runSceneLesson(const LessonInfo&, const SceneLessonFactory&, int argc, char** argv);
 
 }  // namespace stencil
