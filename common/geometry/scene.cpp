@@ -3,6 +3,7 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <climits>
@@ -54,7 +55,10 @@ std::string printable(std::string_view text) {
 // A word from a file as a message quotes it: in single quotes, at most 40 characters of it.
 std::string quote(std::string_view word) {
   constexpr std::size_t most = 40;
-  return "'" + printable(word.substr(0, most)) + (word.size() > most ? "...'" : "'");
+  std::string quoted(1, '\'');
+  quoted.append(printable(word.substr(0, most)));
+  quoted.append(word.size() > most ? "...'" : "'");
+  return quoted;
 }
 
 // The whole text of a regular file of at most maxBytes bytes. Throws std::runtime_error with the
@@ -202,6 +206,18 @@ bool absurdExponent(std::string_view word) {
   return false;
 }
 
+// Whether a word is a number tinyobjloader would not read as one but that means an infinite
+// value: inf or infinity, in any case, with or without a sign.
+bool infiniteWord(std::string_view word) {
+  if (!word.empty() && (word.front() == '+' || word.front() == '-')) word.remove_prefix(1);
+  const auto is = [&](std::string_view name) {
+    return word.size() == name.size() &&
+           std::equal(word.begin(), word.end(), name.begin(),
+                      [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
+  };
+  return is("inf") || is("infinity");
+}
+
 struct ObjCounts {
   long long positions = 0, texcoords = 0, normals = 0;
 };
@@ -276,10 +292,14 @@ ObjLines prescanObj(std::string_view text, const std::string& name) {
     if (vertexData || isStatement(p, "f")) lines.text += line;
     lines.text += '\n';
     if (vertexData)
-      for (const std::string& word : words(p))
+      for (const std::string& word : words(p)) {
         if (absurdExponent(word))
           throw SceneError(name + ":" + std::to_string(number) + ": the number " + quote(word) +
                            " has an exponent of more than 4 digits");
+        if (infiniteWord(word))
+          throw SceneError(name + ":" + std::to_string(number) + ": the number " + quote(word) +
+                           " is not finite");
+      }
     if (isStatement(p, "v")) {
       ++total.positions;
       lines.positions.push_back(number);

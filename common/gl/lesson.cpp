@@ -1,5 +1,6 @@
 #include "gl/lesson.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -313,16 +314,75 @@ void checkPictureOutput(const std::filesystem::path& path, const std::string& fl
   if (rawBeside) checkOutputFile(rawPathBeside(path), flag + " (raw values beside it)");
 }
 
-// Every output the command line names, checked before a context is made or anything rendered.
-// Throws OutputError for the first that could not be written.
-void checkOutputs(const CommandLine& cl) {
-  if (cl.out) checkPictureOutput(*cl.out, "--out", false);
-  if (cl.stencilOut) checkPictureOutput(*cl.stencilOut, "--stencil-out", true);
-  if (cl.oracle) checkPictureOutput(*cl.oracle, "--oracle", true);
+// The folder a failed golden comparison leaves its images in without --artifacts: in the current
+// folder, per lesson, then per variant and backend (only the first part is known before a context).
+std::filesystem::path defaultArtifactsRoot(const LessonInfo& info) {
+  return std::filesystem::path("golden-artifacts") / info.id;
+}
+
+// One output file as a flag names it: the flag, and what is written (a picture or its raw sibling).
+struct OutputFile {
+  std::string flag;
+  std::filesystem::path path;
+};
+
+// The file a path names, for telling whether two paths name one file: absolute, with the links
+// of the part that exists resolved, lexically normal.
+std::filesystem::path sameFileKey(const std::filesystem::path& path) {
+  std::error_code ec;
+  const std::filesystem::path absolute = std::filesystem::absolute(path, ec).lexically_normal();
+  if (ec) return path.lexically_normal();
+  const std::filesystem::path canonical = std::filesystem::weakly_canonical(absolute, ec);
+  return ec ? absolute : canonical.lexically_normal();
+}
+
+// Refuses two outputs that would write one file: the later would replace the earlier.
+void checkDistinctOutputs(const std::vector<OutputFile>& files) {
+  std::vector<std::filesystem::path> keys;
+  for (const OutputFile& f : files) keys.push_back(sameFileKey(f.path));
+  for (std::size_t i = 0; i < files.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (keys[i] == keys[j])
+        throw OutputError(files[j].flag + " " + files[j].path.string() + " and " + files[i].flag + " " +
+                          files[i].path.string() + " are the same file");
+}
+
+// Every output the command line names, checked before a context is made or anything rendered:
+// each can be written, and no two name one file. In compare mode --golden must be an existing
+// folder, and the folder a failed comparison writes to (--artifacts, or the default one) must be
+// one that can be made. Throws UsageError (OutputError for an output) for the first that fails.
+void checkOutputs(const CommandLine& cl, const LessonInfo& info) {
+  std::vector<OutputFile> files;
+  if (cl.out) {
+    checkPictureOutput(*cl.out, "--out", false);
+    files.push_back({"--out", *cl.out});
+  }
+  if (cl.stencilOut) {
+    checkPictureOutput(*cl.stencilOut, "--stencil-out", true);
+    files.push_back({"--stencil-out", *cl.stencilOut});
+    files.push_back({"--stencil-out's raw values", rawPathBeside(*cl.stencilOut)});
+  }
+  if (cl.oracle) {
+    checkPictureOutput(*cl.oracle, "--oracle", true);
+    files.push_back({"--oracle", *cl.oracle});
+    files.push_back({"--oracle's raw classes", rawPathBeside(*cl.oracle)});
+  }
+  checkDistinctOutputs(files);
   if (cl.passesDir) checkOutputFolder(*cl.passesDir, "--passes");
   if (cl.maskOut) checkOutputFolder(*cl.maskOut, "--mask-out");
   if (cl.golden && cl.updateGolden) checkOutputFolder(*cl.golden, "--golden");
-  if (cl.artifacts) checkOutputFolder(*cl.artifacts, "--artifacts");
+  if (cl.golden && !cl.updateGolden) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(*cl.golden, ec))
+      throw UsageError("--golden " + cl.golden->string() +
+                       ": no such folder; --update-golden writes the goldens first");
+    if (cl.artifacts)
+      checkOutputFolder(*cl.artifacts, "--artifacts");
+    else
+      checkOutputFolder(defaultArtifactsRoot(info), "--golden's artifacts folder (no --artifacts)");
+  } else if (cl.artifacts) {
+    checkOutputFolder(*cl.artifacts, "--artifacts");
+  }
 }
 
 Image stencilPicture(const CommandLine& cl, const Image& stencil) {
@@ -375,7 +435,7 @@ int finishRun(Session& s, const Image& colour, const Image& stencil, const std::
                 << goldenStencilPath(*cl.golden, s.variant).string() << "\n";
       return 0;
     }
-    const auto artifacts = cl.artifacts.value_or(std::filesystem::path("golden-artifacts") / s.info.id /
+    const auto artifacts = cl.artifacts.value_or(defaultArtifactsRoot(s.info) /
                                                  (s.variant + "-" + backendName(s.context->backend())));
     const GoldenResult result = checkGolden(colour, stencil, *cl.golden, s.variant, artifacts);
     std::cerr << (result.passed ? "golden ok: " : "golden FAILED: ") << result.message << "\n";
@@ -403,7 +463,11 @@ Scene readScene(const CommandLine& cl, LessonInfo& info) {
   for (Variant& v : info.variants) v.camera.reset();
   if (!info.sceneLightOption.empty()) {
     for (Option& o : info.options)
-      if (o.name == info.sceneLightOption) o.max = static_cast<int>(scene.lights.size()) - 1;
+      if (o.name == info.sceneLightOption) {
+        o.min = 0;
+        o.max = static_cast<int>(scene.lights.size()) - 1;
+        o.value = std::min(o.value, o.max);
+      }
     try {
       optionsFor(info, cl.variant, cl.settings);
     } catch (const UsageError& e) {
@@ -427,6 +491,9 @@ int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, 
     if (!readsScenes && (cl.scene || cl.maskOut))
       throw UsageError(std::string(cl.scene ? "--scene" : "--mask-out") + ": " + lessonInfo.id +
                        " draws only its own scene; the scene lessons read scene files");
+    if (!lessonInfo.shadows && (cl.oracle || cl.maskOut))
+      throw UsageError(std::string(cl.oracle ? "--oracle" : "--mask-out") + ": " + lessonInfo.id +
+                       " makes no shadow claim to check or save");
     if (cl.help) {
       std::cout << helpText(lessonInfo, program, readsScenes);
       return 0;
@@ -435,7 +502,7 @@ int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, 
       std::cout << variantList(lessonInfo);
       return 0;
     }
-    checkOutputs(cl);
+    checkOutputs(cl, lessonInfo);
     LessonInfo info = lessonInfo;
     std::optional<Scene> scene;
     if (cl.scene) scene = readScene(cl, info);

@@ -80,6 +80,10 @@ struct LessonInfo {
   // With --scene FILE its max becomes the file's light count - 1, before the options are checked,
   // so a light the file does not have is refused.
   std::string sceneLightOption;
+  // Whether the lesson makes shadow claims (overrides Lesson::shadowCheck or calls
+  // Frame::shadowMask): only then do --oracle and, for scene lessons, --mask-out apply. Without
+  // it they are refused, and --help does not list them.
+  bool shadows = false;
 };
 
 class PassRecorder;
@@ -160,8 +164,8 @@ int runLesson(const LessonInfo&, const LessonFactory&, int argc, char** argv);
 using SceneLessonFactory = std::function<std::unique_ptr<Lesson>(const Scene* fromFile)>;
 
 // runLesson for such lessons: also takes --scene FILE (its camera replaces the lesson's and the
-// variants'; a file that cannot be read is one line "FILE:LINE: ...", exit 2) and --mask-out DIR
-// (Frame::shadowMask).
+// variants'; a file that cannot be read is one line "FILE:LINE: ...", exit 2) and, where the
+// lesson makes shadow claims (LessonInfo::shadows), --mask-out DIR (Frame::shadowMask).
 int runSceneLesson(const LessonInfo&, const SceneLessonFactory&, int argc, char** argv);
 
 }  // namespace stencil

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <type_traits>
@@ -16,6 +17,8 @@ T parseNumber(const std::string& flag, const std::string& text) {
   T value{};
   const char* end = text.data() + text.size();
   auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (ec == std::errc::result_out_of_range && ptr == end)
+    throw UsageError(flag + " " + text + " is out of range");
   if (ec != std::errc() || ptr != end) throw UsageError(flag + " expects a number, got '" + text + "'");
   if constexpr (std::is_floating_point_v<T>)
     if (!std::isfinite(value)) throw UsageError(flag + " expects a finite number, got '" + text + "'");
@@ -92,9 +95,10 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
     } else if (flag == "--frames") {
       cl.frames = parseNumber<int>(flag, value());
       if (*cl.frames < 1) throw UsageError("--frames must be at least 1");
-    } else if (flag == "--variant")
+    } else if (flag == "--variant") {
       cl.variant = value();
-    else if (flag == "--set") {
+      if (cl.variant.empty()) throw UsageError("unknown variant ''; --list-variants shows them");
+    } else if (flag == "--set") {
       const std::string s = value();
       const auto eq = s.find('=');
       if (eq == std::string::npos) throw UsageError("--set expects NAME=VALUE, got '" + s + "'");
@@ -139,7 +143,16 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
   if (cl.updateGolden && !cl.golden) throw UsageError("--update-golden needs --golden DIR");
   if (cl.headless && cl.backend == Backend::Window)
     throw UsageError("--headless contradicts --backend window");
-  optionsFor(info, cl.variant, cl.settings);  // validates --variant and --set now, not after start-up
+  // Validates --variant and --set now, not after start-up. With --scene, the option that picks a
+  // light takes any index here: its range is the file's lights, checked when the file is read.
+  LessonInfo checked = info;
+  if (cl.scene)
+    for (Option& o : checked.options)
+      if (o.name == info.sceneLightOption) {
+        o.min = 0;
+        o.max = std::numeric_limits<int>::max();
+      }
+  optionsFor(checked, cl.variant, cl.settings);
   return cl;
 }
 
@@ -189,16 +202,18 @@ std::string helpText(const LessonInfo& info, const std::string& program, bool re
       << "                           longer than the pass's CPU time or from a timer without bits,\n"
       << "                           with gpu_ms_null_reason), the lesson's own counts\n"
       << "  --quiet                  no context line on stderr\n";
-  if (readsScenes)
+  if (readsScenes && info.shadows)
     out << "  --mask-out DIR           each light's shadow mask as DIR/light-<i>.png (i from 0): the\n"
         << "                           stencil once that light's shadow is in it, white where it is 0\n"
         << "                           (lit), black elsewhere (of the last frame: headless, or a\n"
         << "                           window with --frames)\n";
+  if (info.shadows)
+    out << "\n"
+        << "  --oracle FILE.png        check the shadows against a CPU ray cast of the same scene,\n"
+        << "                           pixel by pixel; exit 1 if they differ off the edges; the\n"
+        << "                           comparison as a picture (red: wrong, yellow: on an edge);\n"
+        << "                           the oracle's classes as raw bytes beside it, FILE.raw.png\n";
   out << "\n"
-      << "  --oracle FILE.png        check the shadows against a CPU ray cast of the same scene,\n"
-      << "                           pixel by pixel; exit 1 if they differ off the edges; the\n"
-      << "                           comparison as a picture (red: wrong, yellow: on an edge);\n"
-      << "                           the oracle's classes as raw bytes beside it, FILE.raw.png\n\n"
       << "Golden tests\n"
       << "  --golden DIR             compare with DIR/VARIANT.png and DIR/VARIANT.stencil.png;\n"
       << "                           exit 1 on a difference, 77 when no context can be made\n"

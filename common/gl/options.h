@@ -37,7 +37,8 @@ struct CommandLine {
 
 // Throws UsageError with one line for anything it does not understand.
 CommandLine parseCommandLine(const LessonInfo&, int argc, char** argv);
-// readsScenes: the lesson runs through runSceneLesson, so --scene and --mask-out are listed.
+// readsScenes: the lesson runs through runSceneLesson, so --scene is listed, and --mask-out where
+// the lesson makes shadow claims (LessonInfo::shadows, which also lists --oracle).
 std::string helpText(const LessonInfo&, const std::string& program, bool readsScenes = false);
 std::string variantList(const LessonInfo&);
 

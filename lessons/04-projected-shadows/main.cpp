@@ -67,6 +67,7 @@ LessonInfo lessonInfo() {
       {"grazing", "a directional light 10 degrees above the horizon: a very long shadow", {{"case", 4}}},
       {"hole", "a ground with a hole: no shadow in the hole", {{"case", 5}}},
   };
+  info.shadows = true;
   info.passes = {"scene", "shadow"};
   info.camera.distance = 7.5f;
   info.camera.elevationDeg = 35.0f;

@@ -51,6 +51,7 @@ LessonInfo lessonInfo() {
        "the general algorithm with one light, to read one shadow per surface",
        {{"multi", 1}, {"lights", 1}}},
   };
+  info.shadows = true;
   info.passes = {"scene", "shadow", "unlit", "ambient", "light 1", "light 2", "light 3"};
   info.camera.distance = 8.0f;
   info.camera.azimuthDeg = 40.0f;

@@ -65,6 +65,7 @@ LessonInfo lessonInfo() {
        {},
        eyeInShadow()},
   };
+  info.shadows = true;
   info.passes = {"lit", "volumes", "unlit", "show-volumes"};
   info.camera.target = {-0.3f, 0.7f, -0.7f};
   info.camera.distance = 7.5f;

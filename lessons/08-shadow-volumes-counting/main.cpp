@@ -93,6 +93,7 @@ LessonInfo lessonInfo() {
        {},
        nearPlaneInVolume()},
   };
+  info.shadows = true;
   info.passes = {"lit", "front-faces", "back-faces", "unlit", "show-volumes"};
   info.camera.target = {-0.3f, 0.7f, -0.7f};
   info.camera.distance = 7.5f;

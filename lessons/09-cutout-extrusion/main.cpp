@@ -95,6 +95,7 @@ LessonInfo lessonInfo() {
        {{"logo", 0}, {"teapot", 1}, {"sphere", 1}}},
       {"volumes", "the volumes drawn translucently over the result", {{"teapot", 1}, {"volumes", 1}}},
   };
+  info.shadows = true;
   info.passes = {"lit", "count", "unlit", "planar", "volumes"};
   info.camera.distance = 7.5f;
   info.camera.azimuthDeg = 35.0f;

@@ -160,6 +160,7 @@ LessonInfo lessonInfo() {
       {"show-volumes", "the volumes translucently, the silhouettes as lines", {{"show", 1}}},
   };
   info.sceneLightOption = "last";
+  info.shadows = true;
   info.passes = {"ambient", "volumes", "lit", "show-volumes", "silhouettes"};
   info.camera = pinfCamera();
   return info;

@@ -164,6 +164,7 @@ LessonInfo lessonInfo() {
        {{"many", 1}, {"float", 0}}},
   };
   info.sceneLightOption = "light";
+  info.shadows = true;
   info.passes = {"ambient", "shadows", "volume-fill", "illumination", "overlay"};
   return info;
 }

@@ -163,6 +163,7 @@ LessonInfo lessonInfo() {
   info.variants = {
       {"z-fail", "every light's shadow, counted z-fail", {}},
       {"z-pass", "counted z-pass: wrong with the eye in a volume or the near plane in one", {{"zpass", 1}}}};
+  info.shadows = true;
   info.passes = {"ambient", "volumes", "light"};
   info.camera = orbitCameraOf(builtInScene().camera);
   return info;

@@ -126,10 +126,37 @@ TEST(CommandLine, SceneFlagsAreParsedAndListedOnlyForSceneLessons) {
   EXPECT_EQ(cl.maskOut, std::filesystem::path("masks"));
   EXPECT_FALSE(parse({}).scene.has_value());
   EXPECT_THROW(parse({"--scene"}), UsageError);
-  const std::string plain = helpText(info(), "lesson"), scenes = helpText(info(), "lesson", true);
+  LessonInfo shadows = info();
+  shadows.shadows = true;
+  const std::string plain = helpText(shadows, "lesson"), scenes = helpText(shadows, "lesson", true);
   for (const char* s : {"--scene FILE", "--mask-out DIR"}) {
     EXPECT_EQ(plain.find(s), std::string::npos) << s;
     EXPECT_NE(scenes.find(s), std::string::npos) << s;
+  }
+}
+
+// --oracle and --mask-out are listed only for a lesson that makes shadow claims.
+TEST(CommandLine, ShadowFlagsAreListedOnlyForLessonsWithShadows) {
+  LessonInfo shadows = info();
+  shadows.shadows = true;
+  for (const bool readsScenes : {false, true}) {
+    const std::string without = helpText(info(), "lesson", readsScenes);
+    EXPECT_EQ(without.find("--oracle"), std::string::npos);
+    EXPECT_EQ(without.find("--mask-out"), std::string::npos);
+    EXPECT_NE(helpText(shadows, "lesson", readsScenes).find("--oracle FILE.png"), std::string::npos);
+  }
+}
+
+// A number too large for its flag is out of range, not "not a number".
+TEST(CommandLine, NumbersThatDoNotFitAreOutOfRange) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"--frames", "99999999999"}, {"--set", "depth=2147483648"}}) {
+    try {
+      parse(args);
+      ADD_FAILURE() << args[1] << " was accepted";
+    } catch (const UsageError& e) {
+      EXPECT_NE(std::string(e.what()).find("is out of range"), std::string::npos) << e.what();
+    }
   }
 }
 
