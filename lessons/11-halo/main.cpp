@@ -484,7 +484,7 @@ class Halo final : public Lesson {
     if (o == 0) return figureModel(f);
     // The ball floats beside the figure's raised right arm, a little nearer the eye.
     const float bob = 0.08f * std::sin(1.3f * static_cast<float>(f.time));
-    return figureModel(f) * glm::translate(glm::mat4(1), {0.78f, 1.5f + bob, 0.42f});
+    return figureModel(f) * glm::translate(glm::mat4(1), {0.62f, 1.45f + bob, 0.45f});
   }
   // The rail: a thin bar across the figure's chest, 3 cm in front of the body (nearer than the grown shell).
   static glm::mat4 railModel(const Frame& f) {
