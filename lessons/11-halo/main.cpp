@@ -105,6 +105,12 @@ LessonInfo lessonInfo() {
       {"counts-no-invert",
        "the blend counts without INVERT: the overlaps blended twice",
        {{"show", 1}, {"invert", 0}}},
+      {"counts-two-halos",
+       "the blend counts of two halos, a bit each: the ball's ring whole, over the figure too",
+       {{"show", 1}, {"ball", 1}}},
+      {"counts-two-halos-one-bit",
+       "the blend counts with one bit for both: the ball's ring cut where the figure's is",
+       {{"show", 1}, {"ball", 1}, {"shared-bit", 1}}},
   };
   info.passes = {"scene", "reflection", "shadow", "tag", "halo", "measure"};
   info.camera.target = {0.0f, 0.8f, 0.0f};
