@@ -223,12 +223,12 @@ class Halo final : public Lesson {
     glStencilMask(0xFF);
     glClearStencil(static_cast<GLint>(kHaloBit[0] | kHaloBit[1]));  // 1 clear: the halo bits 1, the floor's 0
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);  // nearer surfaces hide farther ones
-    glDepthFunc(GL_LESS);
+    glEnable(GL_DEPTH_TEST);     // nearer surfaces hide farther ones
+    glDepthFunc(GL_LESS);        // the nearest surface wins
     glEnable(GL_CULL_FACE);      // closed objects: their back faces never show
     glDisable(GL_STENCIL_TEST);  // the objects tag nothing
     drawObjects(f, glm::mat4(1), light, counting, nullptr);
-    glEnable(GL_STENCIL_TEST);
+    glEnable(GL_STENCIL_TEST);                   // the floor tags as it is drawn
     glStencilMask(kFloorBits);                   // the floor writes its two bits and no other
     glStencilFunc(GL_ALWAYS, kFloorBits, 0xFF);  // wherever the floor is drawn...
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);   // ...and seen: tagged for the reflection and the shadow
@@ -239,40 +239,40 @@ class Halo final : public Lesson {
     if (f.on("reflect")) {
       glStencilMask(0x00);                                // the reflection writes no bit
       glStencilFunc(GL_EQUAL, kReflectBit, kReflectBit);  // and reads only its own
-      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);             // (nothing is written anyway)
       glDepthFunc(GL_ALWAYS);  // far: the visible floor's depth pushed to the far plane,
       glDepthRange(1.0, 1.0);  // so the reflected objects can be drawn "under" it
       flat_.set("transform", f.projection * f.view);
       flat_.set("colour", sky);
       floor_.draw();
-      glDepthRange(0.0, 1.0);
-      glDepthFunc(GL_LESS);
+      glDepthRange(0.0, 1.0);               // the whole range again
+      glDepthFunc(GL_LESS);                 // the reflected objects hide each other as the real ones do
       const glm::vec4 below = -floorPlane;  // keep what the mirror image puts below the floor
       glFrontFace(GL_CW);                   // the reflection turns windings over
-      glEnable(GL_CLIP_DISTANCE0);
+      glEnable(GL_CLIP_DISTANCE0);          // light_clipped.vert writes the distance to the floor
       drawObjects(f, reflectionMatrix(floorPlane), light, counting, &below);
-      glDisable(GL_CLIP_DISTANCE0);
-      glFrontFace(GL_CCW);
-      glDepthFunc(GL_ALWAYS);  // restore: the floor's depth back over the reflection's,
-      glEnable(GL_BLEND);      // and the polished floor blended over it
+      glDisable(GL_CLIP_DISTANCE0);  // only the reflection is clipped
+      glFrontFace(GL_CCW);           // the real world's winding again
+      glDepthFunc(GL_ALWAYS);        // restore: the floor's depth back over the reflection's,
+      glEnable(GL_BLEND);            // and the polished floor blended over it
       glBlendColor(0.0f, 0.0f, 0.0f, kFloorOpacity);
       glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
       drawSurface(f, floor_, glm::mat4(1), kFloorColour, kBlack, light, counting, nullptr);
-      glDisable(GL_BLEND);
-      glDepthFunc(GL_LESS);
+      glDisable(GL_BLEND);   // opaque again
+      glDepthFunc(GL_LESS);  // the nearest surface wins again
     }
     f.pass("reflection");
 
     // ---- shadow (lesson 04): the objects flattened onto the floor, once per pixel of bit 1 --------------
     if (f.on("shadow")) {
-      glStencilMask(kShadowBit);                        // the shadow writes its own bit only:
-      glStencilFunc(GL_EQUAL, kShadowBit, kShadowBit);  // where it is still set...
-      glStencilOp(GL_KEEP, GL_KEEP, GL_ZERO);           // ...darken, and clear it: once per pixel
-      glDisable(GL_DEPTH_TEST);                         // the bit says where the floor is visible
-      glEnable(GL_BLEND);
-      glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-      glEnable(GL_CLIP_DISTANCE0);  // only what stands above the floor and below the light casts
-      glEnable(GL_CLIP_DISTANCE1);
+      glStencilMask(kShadowBit);                          // the shadow writes its own bit only:
+      glStencilFunc(GL_EQUAL, kShadowBit, kShadowBit);    // where it is still set...
+      glStencilOp(GL_KEEP, GL_KEEP, GL_ZERO);             // ...darken, and clear it: once per pixel
+      glDisable(GL_DEPTH_TEST);                           // the bit says where the floor is visible
+      glEnable(GL_BLEND);                                 // translucent black:
+      glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);  // the floor keeps half its light
+      glEnable(GL_CLIP_DISTANCE0);                        // only what stands above the floor
+      glEnable(GL_CLIP_DISTANCE1);                        // and below the light casts
       shadow_.set("shadowMatrix", planarShadowMatrix(floorPlane, light));
       shadow_.set("viewProjection", f.projection * f.view);
       shadow_.set("receiver", floorPlane);
@@ -282,10 +282,10 @@ class Halo final : public Lesson {
         shadow_.set("model", model);
         mesh.draw();
       });
-      glDisable(GL_CLIP_DISTANCE0);
+      glDisable(GL_CLIP_DISTANCE0);  // nothing else is clipped
       glDisable(GL_CLIP_DISTANCE1);
-      glDisable(GL_BLEND);
-      glEnable(GL_DEPTH_TEST);
+      glDisable(GL_BLEND);      // opaque again
+      glEnable(GL_DEPTH_TEST);  // the tag and the halo are depth tested
     }
     f.pass("shadow");
 
@@ -293,31 +293,30 @@ class Halo final : public Lesson {
     const int haloed = f.on("ball") ? 2 : 1;
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // tagging draws no colour
     glDepthMask(GL_FALSE);                                // and keeps the depth
-    glDepthFunc(GL_LEQUAL);  // the object is in the depth buffer already: its visible pixels pass
-    glStencilFunc(GL_ALWAYS, 0, 0xFF);
+    glDepthFunc(GL_LEQUAL);             // the object is in the depth buffer already: its visible pixels pass
+    glStencilFunc(GL_ALWAYS, 0, 0xFF);  // whatever the bit holds:
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);  // 0 where the object is seen
     for (int o = 0; o < haloed; ++o) {
       glStencilMask(haloBit(f, o));  // into its halo bit alone
       drawHaloed(f, o, light, counting);
     }
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDepthFunc(GL_LESS);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);  // the halo has colour
+    glDepthFunc(GL_LESS);                             // in front of the scene passes
     f.pass("tag");
 
     // ---- 3 halo: the grown object where its bit is 1, blended, the bit inverted as it blends -------------
     if (f.on("halo"))
       for (int o = 0; o < haloed; ++o) drawHalo(f, o, counting);
-    glDepthMask(GL_TRUE);
+    glDepthMask(GL_TRUE);  // GL's defaults again, for the next frame and the window's overlay
     glDisable(GL_BLEND);
     glStencilMask(0xFF);
-    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_STENCIL_TEST);  // the stencil stays as the halo left it, for --stencil-out
     glEnable(GL_DEPTH_TEST);
     f.pass("halo");
 
-    // ---- what the blend counts say (show = 1)
-    // --------------------------------------------------------------
+    // ---- what the blend counts say (show = 1) ------------------------------------------------------
     if (counting) measure(f, haloed);
-    glDisable(GL_CULL_FACE);
+    glDisable(GL_CULL_FACE);  // GL's default again
     f.pass("measure");
   }
 
@@ -344,9 +343,9 @@ class Halo final : public Lesson {
     shell_.set("objectDepth", f.option("depth"));
     if (!f.on("stencil")) {
       glDisable(GL_STENCIL_TEST);  // Kilgard's "covered in yellow": nothing keeps the halo off the object
-      glEnable(GL_DEPTH_TEST);
+      glEnable(GL_DEPTH_TEST);     // but the depth test, and the shell is in front of the object
       drawShell(f, o);
-      glEnable(GL_STENCIL_TEST);
+      glEnable(GL_STENCIL_TEST);  // the next halo may have it
       return;
     }
     glStencilMask(bit);                                                   // the halo writes its bit alone
@@ -355,7 +354,7 @@ class Halo final : public Lesson {
       // Over the visible floor (the reflection's bit, read through the read mask) the shell is drawn
       // without the depth test, so the part of it below the floor still glows there.
       glStencilFunc(GL_EQUAL, static_cast<GLint>(bit | kReflectBit), bit | kReflectBit);
-      glDisable(GL_DEPTH_TEST);
+      glDisable(GL_DEPTH_TEST);  // the floor would hide the shell's part below it
       drawShell(f, o);
       glStencilFunc(GL_EQUAL, static_cast<GLint>(bit), bit | kReflectBit);  // elsewhere, depth tested
     } else {
@@ -420,9 +419,9 @@ class Halo final : public Lesson {
   void measure(Frame& f, int haloed) {
     std::vector<std::uint8_t> rgba(static_cast<std::size_t>(f.size.x) * static_cast<std::size_t>(f.size.y) *
                                    4);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);  // rows packed tight
     glReadPixels(0, 0, f.size.x, f.size.y, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);  // GL's default again
     const std::size_t n = rgba.size() / 4;
     for (int o = 0; o < haloed; ++o) {
       std::vector<std::uint8_t> object(n), blends(n), blocked(n);
@@ -446,11 +445,11 @@ class Halo final : public Lesson {
       f.count(name + "width_max_x100", static_cast<std::uint64_t>(std::lround(100.0 * m.widthMax)));
     }
     // Every fragment the shells rasterize: the same draws with every test and every write off.
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glDepthMask(GL_FALSE);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_STENCIL_TEST);
-    glEnable(GL_CULL_FACE);  // as the halo pass draws them: front faces
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // nothing written:
+    glDepthMask(GL_FALSE);                                // the frame stays as it is
+    glDisable(GL_DEPTH_TEST);                             // nothing rejected:
+    glDisable(GL_STENCIL_TEST);                           // every fragment counts
+    glEnable(GL_CULL_FACE);                               // as the halo pass draws them: front faces
     shell_.set("colour", glm::vec4(0.0f));
     shell_.set("objectDepth", 0);
     for (int o = 0; o < haloed; ++o) {
@@ -466,7 +465,7 @@ class Halo final : public Lesson {
       });
       f.count(std::string(o == 0 ? "figure." : "ball.") + "shell_fragments", rasterized);
     }
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);  // GL's defaults again
     glDepthMask(GL_TRUE);
     glEnable(GL_DEPTH_TEST);
   }
