@@ -241,7 +241,7 @@ class RobustZFail final : public Lesson {
     // Both sides: where the near plane cuts into a closed object, its inside shows, as the
     // oracle's ray cast sees it (culled, the background would show through it).
     glDisable(GL_CULL_FACE);
-    drawScene(f, models, scene_.ambient, glm::vec4(0, 1, 0, 0), glm::vec3(0));
+    drawScene(f, models, scene_.ambient, glm::vec4(0, 1, 0, 0), glm::vec3(0), kInfinity);
     f.pass("ambient");
 
     for (std::size_t i = 0; i < lights.size(); ++i) {
@@ -278,7 +278,8 @@ class RobustZFail final : public Lesson {
       glDepthFunc(GL_EQUAL);  // exactly the visible surfaces of pass 1
       glEnable(GL_BLEND);
       glBlendFunc(GL_ONE, GL_ONE);  // lights add up
-      drawScene(f, models, glm::vec3(0), lights[i].light.position, lights[i].light.color);
+      drawScene(f, models, glm::vec3(0), lights[i].light.position, lights[i].light.color,
+                lights[i].light.radius);
       glDisable(GL_BLEND);
       glDisable(GL_STENCIL_TEST);
       glDepthFunc(GL_LESS);
@@ -419,11 +420,12 @@ class RobustZFail final : public Lesson {
   }
 
   void drawScene(const Frame& f, const std::vector<glm::mat4>& models, glm::vec3 ambient, glm::vec4 light,
-                 glm::vec3 lightColour) {
+                 glm::vec3 lightColour, float radius) {
     light_.set("viewProjection", f.projection * f.view);
     light_.set("ambient", ambient);
     light_.set("light", light);
     light_.set("lightColour", lightColour);
+    light_.set("radius", std::isinf(radius) ? 1e30f : radius);  // the light's bounds (docs/scenes.md)
     light_.set("eye", f.eye);
     light_.set("shininess", 32.0f);
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
