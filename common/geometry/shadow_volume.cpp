@@ -150,7 +150,7 @@ ClosedVolume closedVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, cons
   return closed;
 }
 
-bool isConvex(const Mesh& mesh, const EdgeAdjacency& adjacency) {
+bool isConvex(const Mesh& mesh, const EdgeAdjacency& adjacency, bool facesIn) {
   if (!adjacency.report.closedManifold() || adjacency.report.degenerateTriangles != 0 || mesh.indices.empty())
     return false;
   const std::size_t faces = mesh.indices.size() / 3;
@@ -172,7 +172,8 @@ bool isConvex(const Mesh& mesh, const EdgeAdjacency& adjacency) {
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t i = mesh.indices[3 * std::size_t(g) + k];
       if (i == e.v0 || i == e.v1) continue;
-      return glm::dot(n, mesh.positions[i] - a) / length <= tolerance;
+      const float distance = glm::dot(n, mesh.positions[i] - a) / length;
+      return (facesIn ? -distance : distance) <= tolerance;
     }
     return false;
   };

@@ -120,8 +120,9 @@ ClosedVolume closedVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, cons
 // corner lies on or behind the other face's plane (within a tolerance of 1e-5 of the mesh's
 // size). A closed, connected surface convex at every edge bounds a convex solid, so a segment
 // from a light outside it crosses at most one face that faces the light. Needs a closed mesh's
-// adjacency (welded vertices); false for anything else.
-bool isConvex(const Mesh& mesh, const EdgeAdjacency& adjacency);
+// adjacency (welded vertices); false for anything else. facesIn: the mesh's faces point inwards
+// (a room): whether the region they enclose is convex.
+bool isConvex(const Mesh& mesh, const EdgeAdjacency& adjacency, bool facesIn = false);
 
 // An upper bound on the count one closed volume adds at any point, from what building it saw:
 // 1 for a convex caster; otherwise the number of lit faces, and no more than half the silhouette

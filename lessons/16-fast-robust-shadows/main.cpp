@@ -43,6 +43,7 @@
 #include "geometry/shadow_volume.h"
 #include "geometry/shapes.h"
 #include "gl/doubled_caster.h"
+#include "gl/errors.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
 #include "gl/recorder.h"
@@ -287,7 +288,7 @@ class FastRobustShadows final : public Lesson {
          {"lights_drawn", "lights_offscreen", "casters_culled", "casters_case1", "casters_case2",
           "casters_case3", "casters_zfail", "side_triangles", "dark_cap_triangles", "light_cap_triangles",
           "split_fan_triangles", "fan_spheres", "depth_bounds_used", "depth_bounds_skipped",
-          "objects_cut_by_near_plane"})
+          "objects_cut_by_near_plane", "rooms", "lights_buried"})
       f.count(name, 0);
     for (Caster& c : casters_) c.volume = {};
     GLint framework = 0;
@@ -307,6 +308,11 @@ class FastRobustShadows final : public Lesson {
     glEnable(GL_DEPTH_TEST);  // the nearest surface wins
     glDepthFunc(GL_LESS);
     markCutByNearPlane(f, viewProjection);
+    // Rooms: a closed caster around the eye is a shell seen from inside (geometry/solid.h).
+    models_.clear();
+    for (const SceneObject& o : scene_.objects) models_.push_back(o.modelAt(f.time));
+    solids_ = solidsSeenFrom(scene_, models_, f.eye);
+    if (!solids_.refusal.empty()) throw UsageError(solids_.refusal);
     glEnable(GL_CULL_FACE);  // a closed object's back faces are hidden, unless the near plane cuts it
     drawScene(f, glm::vec4(0, 1, 0, 0), glm::vec3(0), kInfinity, scene_.ambient);
     endPass(f, "ambient");
@@ -330,6 +336,18 @@ class FastRobustShadows final : public Lesson {
       // The stencil cleared everywhere, so what the frame ends with is this light's alone.
       glStencilMask(0xFF);
       glClear(GL_STENCIL_BUFFER_BIT);
+      if (f.on("shadow") && lightBuried(scene_, models_, solids_, light.position)) {
+        // A light inside a solid (outside the room the eye is in) lights nothing the eye sees:
+        // its picture is all shadow, a count of 1 everywhere, and it adds no light.
+        glClearStencil(1);
+        glClear(GL_STENCIL_BUFFER_BIT);
+        glClearStencil(0);
+        f.count("lights_buried");
+        endPass(f, "shadows");
+        f.shadowMask("light-" + std::to_string(order[k]));
+        target_->bind();  // reading the mask may have bound another framebuffer
+        continue;
+      }
       glEnable(GL_SCISSOR_TEST);  // from here on only the light's rectangle is touched
       const bool depthBounds = hasFeature(f.features, Feature::DepthBoundsTest) && clip.depthBounds;
       if (depthBounds) {  // volumes skip pixels whose surface lies in front of or behind the sphere
@@ -477,6 +495,11 @@ class FastRobustShadows final : public Lesson {
         if (checked) caster.volume = {};
         continue;
       }
+      if (solids_.room[caster.object]) {  // convex (solidsSeenFrom checks): nothing inside it is
+        f.count("rooms");                 // in its shadow, and its volume would hold infinity
+        if (checked) caster.volume = {};
+        continue;
+      }
       f.count("casters_case" + std::to_string(choices[c].shadowCase));
       const glm::mat4 model = o.modelAt(f.time);
       const glm::vec4 local = glm::inverse(model) * light.position;  // the light in the caster's space
@@ -539,6 +562,7 @@ class FastRobustShadows final : public Lesson {
     light_.set("light", light);
     light_.set("lightColour", colour);
     light_.set("radius", std::isinf(radius) ? 1e30f : radius);
+    light_.set("twoSided", 1);  // a wall seen from inside a room is lit on the side the eye sees
     light_.set("eye", f.eye);
     light_.set("shininess", 32.0f);
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
@@ -619,6 +643,8 @@ class FastRobustShadows final : public Lesson {
   std::vector<std::unique_ptr<GpuMesh>> drawn_;
   std::vector<bool> closed_;                  // per object: a closed mesh, drawn with back faces culled
   std::vector<BoundingSphere> objectBounds_;  // per object, object space
+  std::vector<glm::mat4> models_;             // per object, this frame
+  SolidsSeen solids_;                         // this frame's rooms
   std::vector<bool> cutByNearPlane_;          // per object, this frame: back faces drawn
   std::vector<Caster> casters_;
   std::vector<std::pair<std::size_t, CasterVolume>> lightVolumes_;  // the current light's, by caster

@@ -14,11 +14,13 @@ uniform vec3 lightColour;  // 0 turns the light off
 uniform vec3 eye;
 uniform float shininess;
 uniform float radius = 1e30;  // a point light's bounds; the default leaves the fall-off alone
+uniform int twoSided = 0;     // 1: a face seen from its back is lit on that side (rooms, lessons 15-16)
 
 out vec4 fragColour;
 
 void main() {
   vec3 n = normalize(worldNormal);
+  if (twoSided != 0 && !gl_FrontFacing) n = -n;  // the side the eye sees
   vec3 toLight = light.xyz - light.w * worldPosition;
   float distance = length(toLight);
   toLight /= distance;

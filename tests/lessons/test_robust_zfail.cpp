@@ -211,3 +211,35 @@ TEST(RobustZFail, ABoundedLightAddsNothingBeyondItsRadiusAndShadesAsLesson16Does
   EXPECT_GT(insideChanged, 1000u) << "the light lights nothing";
   EXPECT_EQ(disagree, 0u) << "lessons 15 and 16 shade the scene differently";
 }
+
+TEST(RobustZFail, ARoomIsLitFromInsideWhicheverWayItsFacesPoint) {
+  // The eye and light 0 inside a closed box (a room), light 1 outside a corner: light 0 lights
+  // the walls' inner sides (two-sided receivers: the side the eye sees), light 1 nothing. The
+  // room written as an OBJ facing inwards gives the same picture, in both lessons.
+  const std::string box = std::string(SCENES_DIR) + "/hard/room-eye-inside-a-box.scene";
+  const std::string inward = std::string(SCENES_DIR) + "/hard/room-faces-inward.scene";
+  const auto dark = std::filesystem::temp_directory_path() / "stencil-15-robust-zfail" / "room-dark.scene";
+  {  // the same room with light 0 off: what light 0 adds shows against it
+    std::ifstream in(box);
+    std::ofstream out(dark);
+    for (std::string line; std::getline(in, line);)
+      out << (line.rfind("light point 0.8", 0) == 0 ? "light point 0.8 2.5 0.8 color 0 0 0" : line) << "\n";
+  }
+  const auto lit = run("room", "--scene " + box), off = run("room-dark", "--scene " + dark.string()),
+             fromObj = run("room-inward", "--scene " + inward);
+  const auto sixteen = runLesson(LESSON_16, "room", "--scene " + box),
+             sixteenObj = runLesson(LESSON_16, "room-inward", "--scene " + inward);
+  if (!lit || !off || !fromObj || !sixteen || !sixteenObj) GTEST_SKIP() << "no GL context";
+  const std::size_t pixels = lit->colour.pixels.size() / 4;
+  std::size_t brighter = 0, objDiffers = 0, sixteenDiffers = 0, sixteenObjDiffers = 0;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    brighter += stencil::testing::differs(lit->colour, off->colour, i, 2);
+    objDiffers += stencil::testing::differs(lit->colour, fromObj->colour, i, 2);
+    sixteenDiffers += stencil::testing::differs(lit->colour, sixteen->colour, i, 2);
+    sixteenObjDiffers += stencil::testing::differs(sixteen->colour, sixteenObj->colour, i, 2);
+  }
+  EXPECT_GT(brighter, pixels * 9 / 10) << "light 0 lights the room's inside";
+  EXPECT_EQ(objDiffers, 0u) << "the room facing inwards looks the same";
+  EXPECT_EQ(sixteenDiffers, 0u) << "lesson 16 draws the room as lesson 15 does";
+  EXPECT_EQ(sixteenObjDiffers, 0u);
+}
