@@ -16,7 +16,9 @@
 #include <set>
 #include <sstream>
 
+#include "geometry/shadow_volume.h"
 #include "geometry/shapes.h"
+#include "geometry/solid.h"
 #include "geometry/weld.h"
 
 namespace stencil {
@@ -852,6 +854,45 @@ Scene loadScene(const std::filesystem::path& file) {
     throw SceneError(file.string() + ": cannot open the scene file: " + e.what());
   }
   return parseScene(text, file);
+}
+
+SolidsSeen solidsSeenFrom(const Scene& scene, const std::vector<glm::mat4>& models, const glm::vec3& eye) {
+  SolidsSeen seen;
+  seen.room.assign(scene.objects.size(), false);
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const SceneObject& o = scene.objects[i];
+    if (!o.casts || !o.caster.report.closed()) continue;
+    const Mesh& mesh = o.caster.mesh;
+    const bool facesIn = signedVolume(mesh) < 0.0;
+    const SolidSide side =
+        solidSide(mesh, facesIn, glm::vec3(glm::inverse(models[i]) * glm::vec4(eye, 1.0f)));
+    seen.room[i] = side.room;
+    if (!seen.refusal.empty()) continue;
+    const std::string where =
+        scene.file.empty() ? "" : scene.file.string() + ":" + std::to_string(o.line) + ": ";
+    if (facesIn && !side.room)
+      seen.refusal = where + "caster '" + o.name +
+                     "' faces inwards and the eye is outside it: a solid written inside out (turn its faces "
+                     "round, or put the eye inside: a mesh facing inwards is a room)";
+    else if (side.room && !isConvex(mesh, o.caster.adjacency, facesIn))
+      seen.refusal =
+          where + "caster '" + o.name +
+          "' holds the eye, so it is a room, and it is not convex: its walls would shadow parts of "
+          "its own inside, which z-fail cannot count (its solid reaches to infinity)";
+  }
+  return seen;
+}
+
+bool lightBuried(const Scene& scene, const std::vector<glm::mat4>& models, const SolidsSeen& seen,
+                 const glm::vec4& light) {
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const SceneObject& o = scene.objects[i];
+    if (!o.casts || !o.caster.report.closed()) continue;
+    const Mesh& mesh = o.caster.mesh;
+    if (lightBuried(mesh, {signedVolume(mesh) < 0.0, seen.room[i]}, glm::inverse(models[i]) * light))
+      return true;
+  }
+  return false;
 }
 
 }  // namespace stencil

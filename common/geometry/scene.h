@@ -110,6 +110,22 @@ struct Scene {
   std::vector<SceneObject> objects;
 };
 
+// Rooms and buried lights (geometry/solid.h) for one frame: which closed casters hold the eye,
+// and why lessons 15 and 16 cannot draw the scene, if they cannot (one line naming the object;
+// empty when they can): a caster whose faces point in seen from outside (a solid written inside
+// out), or a room that is not convex (its walls would shadow parts of its own inside, and the
+// volume of a solid that reaches to infinity is not one z-fail can count).
+struct SolidsSeen {
+  std::vector<bool> room;  // per object
+  std::string refusal;
+};
+SolidsSeen solidsSeenFrom(const Scene&, const std::vector<glm::mat4>& models, const glm::vec3& eye);
+
+// Whether a light (world, homogeneous) is buried in a casting object's solid: it then lights
+// nothing the eye sees, and its whole picture is shadow.
+bool lightBuried(const Scene&, const std::vector<glm::mat4>& models, const SolidsSeen&,
+                 const glm::vec4& light);
+
 // The scene at a time as the shadow oracle sees it (geometry/shadow_oracle.h): every object's
 // drawn mesh at its model matrix then, with its casts and receives. Points into the scene.
 std::vector<OracleObject> oracleObjects(const Scene&, double time);

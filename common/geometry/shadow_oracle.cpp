@@ -1,5 +1,6 @@
 #include "geometry/shadow_oracle.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -37,27 +38,40 @@ CameraRay cameraRay(const glm::dmat4& inverseViewProjection, glm::ivec2 size, in
           std::numeric_limits<float>::infinity()};
 }
 
-bool onEdge(const std::vector<PixelClass>& oracle, glm::ivec2 size, int x, int y) {
-  const PixelClass c = oracle[static_cast<std::size_t>(y * size.x + x)];
+// How far along the surface's normal a shadow ray starts so that it cannot meet the surface it
+// starts on. The hit point carries the rounding of origin + t * direction in each coordinate, a
+// few float ulps of the larger of the two (1e-6 is about 8 ulps); only the part along the normal
+// can put the start behind the surface. Never less than 1e-4 scene units.
+float selfIntersectionOffset(const glm::vec3& point, const glm::vec3& rayOrigin, const glm::vec3& normal) {
+  const glm::vec3 error = 1e-6f * glm::max(glm::abs(point), glm::abs(rayOrigin));
+  return std::max(1e-4f, glm::dot(glm::abs(normal), error));
+}
+
+bool onEdge(const std::vector<PixelClass>& oracle, const std::vector<int>* surfaces, glm::ivec2 size, int x,
+            int y) {
+  const auto i = static_cast<std::size_t>(y * size.x + x);
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) {
       const int nx = x + dx, ny = y + dy;
       if (nx < 0 || ny < 0 || nx >= size.x || ny >= size.y) continue;
-      if (oracle[static_cast<std::size_t>(ny * size.x + nx)] != c) return true;
+      const auto n = static_cast<std::size_t>(ny * size.x + nx);
+      if (oracle[n] != oracle[i] || (surfaces && (*surfaces)[n] != (*surfaces)[i])) return true;
     }
   return false;
 }
 
-void checkSizes(const std::vector<PixelClass>& oracle, const std::vector<bool>& lit, glm::ivec2 size) {
+void checkSizes(const std::vector<PixelClass>& oracle, const std::vector<bool>& lit, glm::ivec2 size,
+                const std::vector<int>* surfaces) {
   const auto n = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y);
-  if (oracle.size() != n || lit.size() != n)
+  if (oracle.size() != n || lit.size() != n || (surfaces && surfaces->size() != n))
     throw std::invalid_argument("oracle comparison: the images have different sizes");
 }
 
 }  // namespace
 
 std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objects, const glm::vec4& light,
-                                       const glm::mat4& viewProjection, glm::ivec2 size, float lightRadius) {
+                                       const glm::mat4& viewProjection, glm::ivec2 size, float lightRadius,
+                                       std::vector<int>* surfaces) {
   RayScene scene;
   std::vector<std::size_t> objectOf;  // scene object -> index into objects
   for (std::size_t i = 0; i < objects.size(); ++i) {
@@ -93,6 +107,7 @@ std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objects,
   const glm::dmat4 inverse = glm::inverse(glm::dmat4(viewProjection));
 
   std::vector<PixelClass> classes(static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y));
+  if (surfaces) surfaces->assign(classes.size(), -1);
   for (int y = 0; y < size.y; ++y)
     for (int x = 0; x < size.x; ++x) {
       PixelClass& c = classes[static_cast<std::size_t>(y * size.x + x)];
@@ -102,6 +117,7 @@ std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objects,
         c = PixelClass::Empty;
         continue;
       }
+      if (surfaces) (*surfaces)[static_cast<std::size_t>(y * size.x + x)] = static_cast<int>(hit->object);
       if (!objects[hit->object].receives) {
         c = PixelClass::Other;
         continue;
@@ -117,17 +133,27 @@ std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objects,
         c = PixelClass::OutOfReach;
         continue;
       }
+      // The side of the surface the camera sees. A caster's side turned from the light lies in
+      // its own shadow volume (between its light cap and its dark cap), which is where the
+      // stencil puts it; deciding it by that rule, not by a shadow ray grazing the surface,
+      // keeps facets a hair from edge-on from being called lit by rounding.
       const glm::vec3 towardsCamera =
           glm::dot(hit->normal, ray.direction) < 0.0f ? hit->normal : -hit->normal;
-      c = occluded(rayTowardsLight(point + 1e-4f * towardsCamera, light)) ? PixelClass::Shadowed
-                                                                          : PixelClass::Lit;
+      if (objects[hit->object].casts && glm::dot(towardsCamera, toLight) < 0.0f) {
+        c = PixelClass::Shadowed;
+        continue;
+      }
+      c = occluded(rayTowardsLight(
+              point + selfIntersectionOffset(point, ray.origin, towardsCamera) * towardsCamera, light))
+              ? PixelClass::Shadowed
+              : PixelClass::Lit;
     }
   return classes;
 }
 
 OracleReport compareWithOracle(const std::vector<PixelClass>& oracle, const std::vector<bool>& litInImage,
-                               glm::ivec2 size) {
-  checkSizes(oracle, litInImage, size);
+                               glm::ivec2 size, const std::vector<int>* surfaces) {
+  checkSizes(oracle, litInImage, size, surfaces);
   OracleReport report;
   for (int y = 0; y < size.y; ++y)
     for (int x = 0; x < size.x; ++x) {
@@ -136,14 +162,15 @@ OracleReport compareWithOracle(const std::vector<PixelClass>& oracle, const std:
       report.shadowedPixels += oracle[i] == PixelClass::Shadowed;
       if ((oracle[i] == PixelClass::Lit) == litInImage[i]) continue;
       ++report.disagreements;
-      report.onEdges += onEdge(oracle, size, x, y);
+      report.onEdges += onEdge(oracle, surfaces, size, x, y);
     }
   return report;
 }
 
 std::vector<std::uint8_t> oraclePicture(const std::vector<PixelClass>& oracle,
-                                        const std::vector<bool>& litInImage, glm::ivec2 size) {
-  checkSizes(oracle, litInImage, size);
+                                        const std::vector<bool>& litInImage, glm::ivec2 size,
+                                        const std::vector<int>* surfaces) {
+  checkSizes(oracle, litInImage, size, surfaces);
   std::vector<std::uint8_t> rgba;
   rgba.reserve(oracle.size() * 4);
   for (int y = 0; y < size.y; ++y)
@@ -151,7 +178,7 @@ std::vector<std::uint8_t> oraclePicture(const std::vector<PixelClass>& oracle,
       const auto i = static_cast<std::size_t>(y * size.x + x);
       glm::u8vec3 c;
       if ((oracle[i] == PixelClass::Lit) != litInImage[i])
-        c = onEdge(oracle, size, x, y) ? glm::u8vec3(240, 200, 0) : glm::u8vec3(255, 0, 0);
+        c = onEdge(oracle, surfaces, size, x, y) ? glm::u8vec3(240, 200, 0) : glm::u8vec3(255, 0, 0);
       else if (oracle[i] == PixelClass::Lit)
         c = {210, 210, 200};
       else if (oracle[i] == PixelClass::Shadowed)

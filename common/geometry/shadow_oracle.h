@@ -35,12 +35,17 @@ struct OracleObject {
 };
 
 // The class of every pixel centre of a size.x by size.y image seen through viewProjection
-// (GL's conventions: clip space -1..1), top row first like Image. Cast shadows only: a
-// receiver facing away from the light is still Lit unless a caster is in the way.
+// (GL's conventions: clip space -1..1), top row first like Image. Shadowed where a caster
+// blocks the way to the light, and on a caster's own side turned from the light (the side the
+// camera sees), which lies in the caster's shadow volume; a receiver that casts nothing and
+// faces away from the light is still Lit unless a caster is in the way.
 // lightRadius bounds a point light (geometry/scene.h, SceneLight::radius).
+// When surfaces is given, it receives per pixel the index into the objects of what the camera
+// ray meets, -1 for nothing: where it changes, the pixel lies on a silhouette.
 std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>&, const glm::vec4& light,
                                        const glm::mat4& viewProjection, glm::ivec2 size,
-                                       float lightRadius = std::numeric_limits<float>::infinity());
+                                       float lightRadius = std::numeric_limits<float>::infinity(),
+                                       std::vector<int>* surfaces = nullptr);
 
 struct OracleReport {
   std::size_t receiverPixels = 0;  // Lit or Shadowed by the oracle
@@ -51,13 +56,16 @@ struct OracleReport {
 };
 
 // Compares the image's verdict (true: a lit receiver) with the oracle's Lit, pixel by pixel.
-// A pixel is on an edge when a pixel of its 3x3 neighbourhood has another class.
+// A pixel is on an edge when a pixel of its 3x3 neighbourhood has another class or, given the
+// surfaces classifyPixels found, another surface: a silhouette, where the rasterizer's coverage
+// and the ray through the pixel centre may see different things.
 OracleReport compareWithOracle(const std::vector<PixelClass>& oracle, const std::vector<bool>& litInImage,
-                               glm::ivec2 size);
+                               glm::ivec2 size, const std::vector<int>* surfaces = nullptr);
 
 // A picture of the comparison, RGBA top row first: the oracle's classes in greys and blue,
 // forgiven disagreements yellow, the others red.
 std::vector<std::uint8_t> oraclePicture(const std::vector<PixelClass>& oracle,
-                                        const std::vector<bool>& litInImage, glm::ivec2 size);
+                                        const std::vector<bool>& litInImage, glm::ivec2 size,
+                                        const std::vector<int>* surfaces = nullptr);
 
 }  // namespace stencil

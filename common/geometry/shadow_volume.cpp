@@ -1,7 +1,9 @@
 #include "geometry/shadow_volume.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -109,6 +111,11 @@ ShadowVolume polygonVolumes(const Mesh& mesh, const glm::vec4& light, float dist
 
 ClosedVolume closedVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, const glm::vec4& light,
                           float distance) {
+  return closedVolume(mesh, adjacency, light, distance, facesLight(mesh, light));
+}
+
+ClosedVolume closedVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, const glm::vec4& light,
+                          float distance, const std::vector<bool>& lit) {
   const AdjacencyReport& r = adjacency.report;
   if (r.borderEdges != 0 || r.nonManifoldEdges != 0 || r.inconsistentEdges != 0) {
     throw std::invalid_argument("closedVolume: the caster has " + std::to_string(r.borderEdges) +
@@ -116,7 +123,9 @@ ClosedVolume closedVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, cons
                                 std::to_string(r.inconsistentEdges) +
                                 " inconsistently wound edges; only a closed mesh bounds a closed volume");
   }
-  const std::vector<bool> lit = facesLight(mesh, light);
+  if (lit.size() != mesh.indices.size() / 3)
+    throw std::invalid_argument("closedVolume: " + std::to_string(lit.size()) + " lit flags for " +
+                                std::to_string(mesh.indices.size() / 3) + " triangles");
   ClosedVolume closed;
   ShadowVolume& v = closed.triangles;
   const std::vector<SilhouetteEdge> silhouette = silhouetteEdges(adjacency, lit);
@@ -139,6 +148,96 @@ ClosedVolume closedVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, cons
         v.vertices.push_back(extrudeAway(mesh.positions[mesh.indices[3 * t + k]], light, distance));
   closed.darkCapTriangles = v.triangleCount() - closed.sideTriangles - closed.lightCapTriangles;
   return closed;
+}
+
+bool isConvex(const Mesh& mesh, const EdgeAdjacency& adjacency, bool facesIn) {
+  if (!adjacency.report.closedManifold() || adjacency.report.degenerateTriangles != 0 || mesh.indices.empty())
+    return false;
+  const std::size_t faces = mesh.indices.size() / 3;
+  glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
+  for (const glm::vec3& p : mesh.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const float tolerance = 1e-5f * glm::length(hi - lo);
+  const auto corner = [&](std::int32_t f, int k) {
+    return mesh.positions[mesh.indices[3 * std::size_t(f) + k]];
+  };
+  // The corner of face g that is not on the edge, against face f's plane (normal not normalised:
+  // scale the distance).
+  const auto behind = [&](std::int32_t f, std::int32_t g, const Edge& e) {
+    const glm::vec3 a = corner(f, 0), n = glm::cross(corner(f, 1) - a, corner(f, 2) - a);
+    const float length = glm::length(n);
+    if (length == 0.0f) return false;
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t i = mesh.indices[3 * std::size_t(g) + k];
+      if (i == e.v0 || i == e.v1) continue;
+      const float distance = glm::dot(n, mesh.positions[i] - a) / length;
+      return (facesIn ? -distance : distance) <= tolerance;
+    }
+    return false;
+  };
+  // Union-find over faces: connected through shared edges.
+  std::vector<std::size_t> parent(faces);
+  for (std::size_t f = 0; f < faces; ++f) parent[f] = f;
+  const auto root = [&](std::size_t f) {
+    while (parent[f] != f) f = parent[f] = parent[parent[f]];
+    return f;
+  };
+  std::size_t pieces = faces;
+  for (const Edge& e : adjacency.edges) {
+    if (!behind(e.face0, e.face1, e) || !behind(e.face1, e.face0, e)) return false;
+    const std::size_t a = root(std::size_t(e.face0)), b = root(std::size_t(e.face1));
+    if (a != b) {
+      parent[a] = b;
+      --pieces;
+    }
+  }
+  return pieces == 1;
+}
+
+std::size_t nestingBound(std::size_t litFaces, std::size_t silhouetteEdges, bool convex, bool lightOutside) {
+  if (litFaces == 0) return 0;
+  if (convex) return 1;
+  return lightOutside ? std::min(litFaces, silhouetteEdges / 2) : litFaces;
+}
+
+std::vector<std::vector<bool>> litFacePieces(const std::vector<bool>& lit, std::size_t maxFaces) {
+  if (maxFaces == 0) throw std::invalid_argument("litFacePieces: pieces of 0 faces");
+  std::vector<std::vector<bool>> pieces;
+  std::size_t inPiece = maxFaces;
+  for (std::size_t t = 0; t < lit.size(); ++t) {
+    if (!lit[t]) continue;
+    if (inPiece == maxFaces) {
+      pieces.emplace_back(lit.size(), false);
+      inPiece = 0;
+    }
+    pieces.back()[t] = true;
+    ++inPiece;
+  }
+  return pieces;
+}
+
+CountPlan countPlan(const std::vector<std::size_t>& bounds) {
+  CountPlan plan;
+  plan.group.assign(bounds.size(), 0);
+  std::size_t total = 0;
+  for (std::size_t b : bounds) total += b;
+  if (total <= 255) {
+    plan.groups = bounds.empty() ? 0 : 1;
+    return plan;
+  }
+  plan.fold = true;
+  std::size_t inGroup = 0;
+  for (std::size_t i = 0; i < bounds.size(); ++i) {
+    if (plan.groups == 0 || inGroup + bounds[i] > 127) {
+      ++plan.groups;
+      inGroup = 0;
+    }
+    plan.group[i] = plan.groups - 1;
+    inGroup += bounds[i];
+  }
+  return plan;
 }
 
 }  // namespace stencil

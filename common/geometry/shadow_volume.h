@@ -98,4 +98,55 @@ struct ClosedVolume {
 ClosedVolume closedVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, const glm::vec4& light,
                           float distance);
 
+// The same with the light cap given: `lit` (one flag per triangle) must be a subset of the faces
+// that face the light, such as one piece of litFacePieces. The sides extrude the edges between
+// a lit face and any other, the light cap is the lit faces, and every other face goes to the
+// dark cap. For a light outside the caster the count this volume adds at a point is the number
+// of lit faces the segment from the light to the point crosses: the pieces' counts add up to the
+// whole caster's. Throws as closedVolume does, and std::invalid_argument when lit has the wrong
+// size.
+ClosedVolume closedVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, const glm::vec4& light,
+                          float distance, const std::vector<bool>& lit);
+
+// ---- more than 255 nested volumes ------------------------------------------------------------
+//
+// The z-fail count at a point is how many times the segment from the light to the point crosses a
+// caster's faces that face the light, summed over the casters. An 8-bit stencil wraps at 256, and
+// a point inside 256 volumes reads 0: lit. countPlan splits a light's volumes into groups whose
+// counts cannot pass 127, to be counted in the low 7 bits and folded into the top bit after each
+// group; a scene whose bounds add up to 255 or less keeps the plain 8-bit count.
+
+// Whether a closed caster is convex: one connected piece, and at every edge each face's far
+// corner lies on or behind the other face's plane (within a tolerance of 1e-5 of the mesh's
+// size). A closed, connected surface convex at every edge bounds a convex solid, so a segment
+// from a light outside it crosses at most one face that faces the light. Needs a closed mesh's
+// adjacency (welded vertices); false for anything else. facesIn: the mesh's faces point inwards
+// (a room): whether the region they enclose is convex.
+bool isConvex(const Mesh& mesh, const EdgeAdjacency& adjacency, bool facesIn = false);
+
+// An upper bound on the count one closed volume adds at any point, from what building it saw:
+// 1 for a convex caster; otherwise the number of lit faces, and no more than half the silhouette
+// edges when the light lies outside the caster's bounding sphere (or is directional). Why the
+// half: seen from the light, a great circle of directions (a line, for a directional light)
+// through any direction leaves the caster's outline, crosses each silhouette edge's image at most
+// once, and the number of lit faces behind it changes by one at each crossing, from 0 back to 0.
+std::size_t nestingBound(std::size_t litFaces, std::size_t silhouetteEdges, bool convex, bool lightOutside);
+
+// The faces that face the light in pieces of at most maxFaces each, in index order (one flag
+// per triangle per piece): a caster whose count could pass a group's range is counted piece by
+// piece (closedVolume with each piece as `lit`). No pieces when no face faces the light.
+// Throws std::invalid_argument for maxFaces 0.
+std::vector<std::vector<bool>> litFacePieces(const std::vector<bool>& lit, std::size_t maxFaces);
+
+// Which group each volume is counted in, from their nesting bounds in drawing order.
+struct CountPlan {
+  std::vector<int> group;  // per volume; groups are consecutive, from 0
+  int groups = 0;
+  bool fold = false;  // count in bits 0-6 and fold each group into bit 7; else all 8 bits, one group
+};
+// The plain count (one group, no fold) when the bounds add up to 255 or less; otherwise greedy
+// groups of at most 127 each. A bound above 127 (split such a caster with litFacePieces first)
+// gets a group of its own and can still wrap: the caller should not let that happen.
+CountPlan countPlan(const std::vector<std::size_t>& bounds);
+
 }  // namespace stencil

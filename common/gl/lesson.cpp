@@ -285,16 +285,17 @@ bool checkShadows(const Session& s, const Image& stencil) {
                      "' to check with --oracle");
   const ShadowCheck& check = *s.shadowCheck;
   const glm::ivec2 size{stencil.width, stencil.height};
+  std::vector<int> surfaces;
   const std::vector<PixelClass> oracle =
-      classifyPixels(check.objects, check.light, s.viewProjection, size, check.lightRadius);
+      classifyPixels(check.objects, check.light, s.viewProjection, size, check.lightRadius, &surfaces);
   std::vector<bool> lit(stencil.pixels.size());
   for (std::size_t i = 0; i < lit.size(); ++i) {
     const bool receiver = oracle[i] == PixelClass::Lit || oracle[i] == PixelClass::Shadowed;
     lit[i] = check.judgeReceiversOnly && !receiver ? false : check.litInStencil(stencil.pixels[i]);
   }
-  const OracleReport r = compareWithOracle(oracle, lit, size);
+  const OracleReport r = compareWithOracle(oracle, lit, size, &surfaces);
   Image picture(size.x, size.y, 4);
-  picture.pixels = oraclePicture(oracle, lit, size);
+  picture.pixels = oraclePicture(oracle, lit, size, &surfaces);
   writePng(*s.commandLine.oracle, picture);
   Image classes(size.x, size.y, 1);  // the oracle's classes as raw bytes (PixelClass), for tools
   for (std::size_t i = 0; i < oracle.size(); ++i) classes.pixels[i] = static_cast<std::uint8_t>(oracle[i]);

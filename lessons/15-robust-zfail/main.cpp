@@ -234,6 +234,9 @@ class RobustZFail final : public Lesson {
     const std::vector<glm::mat4> models = modelsAt(f.time);
     const std::vector<ShiningLight> lights = lightsInOrder(f);
     mirroredView_ = glm::determinant(glm::mat3(f.view)) < 0.0f;
+    // Rooms: a closed caster around the eye is a shell seen from inside (geometry/solid.h).
+    solids_ = solidsSeenFrom(scene_, models, f.eye);
+    if (!solids_.refusal.empty()) throw UsageError(solids_.refusal);
 
     // 1. Ambient light everywhere, filling the depth buffer that every later pass tests against.
     glEnable(GL_DEPTH_TEST);
@@ -241,11 +244,23 @@ class RobustZFail final : public Lesson {
     // Both sides: where the near plane cuts into a closed object, its inside shows, as the
     // oracle's ray cast sees it (culled, the background would show through it).
     glDisable(GL_CULL_FACE);
-    drawScene(f, models, scene_.ambient, glm::vec4(0, 1, 0, 0), glm::vec3(0));
+    drawScene(f, models, scene_.ambient, glm::vec4(0, 1, 0, 0), glm::vec3(0), kInfinity);
     f.pass("ambient");
 
     for (std::size_t i = 0; i < lights.size(); ++i) {
       buildVolumes(f, models, lights[i].light.position, i);
+      if (f.on("shadow") && lightBuried(scene_, models, solids_, lights[i].light.position)) {
+        // A light inside a solid (outside the room the eye is in) lights nothing the eye sees:
+        // its picture is all shadow, a count of 1 everywhere, and it adds no light.
+        glClearStencil(1);
+        glClear(GL_STENCIL_BUFFER_BIT);
+        glClearStencil(0);
+        f.count("lights_buried");
+        f.pass("volumes");
+        f.shadowMask("light-" + std::to_string(lights[i].index));
+        f.pass("lit");
+        continue;
+      }
       if (f.on("shadow")) {
         // 2. Count this light's volumes. The stencil starts at zero for each light.
         glClear(GL_STENCIL_BUFFER_BIT);
@@ -278,7 +293,8 @@ class RobustZFail final : public Lesson {
       glDepthFunc(GL_EQUAL);  // exactly the visible surfaces of pass 1
       glEnable(GL_BLEND);
       glBlendFunc(GL_ONE, GL_ONE);  // lights add up
-      drawScene(f, models, glm::vec3(0), lights[i].light.position, lights[i].light.color);
+      drawScene(f, models, glm::vec3(0), lights[i].light.position, lights[i].light.color,
+                lights[i].light.radius);
       glDisable(GL_BLEND);
       glDisable(GL_STENCIL_TEST);
       glDepthFunc(GL_LESS);
@@ -354,7 +370,9 @@ class RobustZFail final : public Lesson {
     for (std::size_t i = 0; i < scene_.objects.size(); ++i, ++slot) {
       const SceneObject& o = scene_.objects[i];
       if (!volumes_[slot]) volumes_[slot] = std::make_unique<GpuTriangles>();
-      if (!o.casts) {
+      // A room (convex, solidsSeenFrom checks) shadows nothing inside itself, where the eye and
+      // an unburied light are: its volume would be its outside, which holds infinity.
+      if (!o.casts || solids_.room[i]) {
         volumes_[slot]->upload({});
         continue;
       }
@@ -419,11 +437,13 @@ class RobustZFail final : public Lesson {
   }
 
   void drawScene(const Frame& f, const std::vector<glm::mat4>& models, glm::vec3 ambient, glm::vec4 light,
-                 glm::vec3 lightColour) {
+                 glm::vec3 lightColour, float radius) {
     light_.set("viewProjection", f.projection * f.view);
     light_.set("ambient", ambient);
     light_.set("light", light);
     light_.set("lightColour", lightColour);
+    light_.set("radius", std::isinf(radius) ? 1e30f : radius);  // the light's bounds (docs/scenes.md)
+    light_.set("twoSided", 1);  // a wall seen from inside a room is lit on the side the eye sees
     light_.set("eye", f.eye);
     light_.set("shininess", 32.0f);
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
@@ -447,6 +467,7 @@ class RobustZFail final : public Lesson {
   bool mirroredView_ = false;
   Program light_, volume_;
   std::vector<std::unique_ptr<GpuMesh>> gpu_;
+  SolidsSeen solids_;                                   // this frame's rooms
   std::vector<std::unique_ptr<GpuTriangles>> volumes_;  // per light, per object (empty for non-casters)
   std::vector<glm::mat4> volumeModels_;
   GpuLines silhouettes_;

@@ -43,6 +43,7 @@
 #include "geometry/shadow_volume.h"
 #include "geometry/shapes.h"
 #include "gl/doubled_caster.h"
+#include "gl/errors.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
 #include "gl/recorder.h"
@@ -274,7 +275,7 @@ class AccumulationTarget {
 class FastRobustShadows final : public Lesson {
  public:
   explicit FastRobustShadows(const Scene* fromFile)
-      : light_("common/light.vert", "16-fast-robust-shadows/light.frag"),
+      : light_("common/light.vert", "common/light.frag"),
         extrude_("common/extrude.vert", "common/flat.frag"),
         flat_("common/flat.vert", "common/flat.frag") {
     if (fromFile) setScene(*fromFile);
@@ -286,7 +287,8 @@ class FastRobustShadows final : public Lesson {
     for (const char* name :
          {"lights_drawn", "lights_offscreen", "casters_culled", "casters_case1", "casters_case2",
           "casters_case3", "casters_zfail", "side_triangles", "dark_cap_triangles", "light_cap_triangles",
-          "split_fan_triangles", "fan_spheres", "depth_bounds_used", "depth_bounds_skipped"})
+          "split_fan_triangles", "fan_spheres", "depth_bounds_used", "depth_bounds_skipped",
+          "objects_cut_by_near_plane", "rooms", "lights_buried"})
       f.count(name, 0);
     for (Caster& c : casters_) c.volume = {};
     GLint framework = 0;
@@ -305,7 +307,13 @@ class FastRobustShadows final : public Lesson {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);  // the nearest surface wins
     glDepthFunc(GL_LESS);
-    glEnable(GL_CULL_FACE);  // every object is closed, or a floor seen from above
+    markCutByNearPlane(f, viewProjection);
+    // Rooms: a closed caster around the eye is a shell seen from inside (geometry/solid.h).
+    models_.clear();
+    for (const SceneObject& o : scene_.objects) models_.push_back(o.modelAt(f.time));
+    solids_ = solidsSeenFrom(scene_, models_, f.eye);
+    if (!solids_.refusal.empty()) throw UsageError(solids_.refusal);
+    glEnable(GL_CULL_FACE);  // a closed object's back faces are hidden, unless the near plane cuts it
     drawScene(f, glm::vec4(0, 1, 0, 0), glm::vec3(0), kInfinity, scene_.ambient);
     endPass(f, "ambient");
 
@@ -328,6 +336,18 @@ class FastRobustShadows final : public Lesson {
       // The stencil cleared everywhere, so what the frame ends with is this light's alone.
       glStencilMask(0xFF);
       glClear(GL_STENCIL_BUFFER_BIT);
+      if (f.on("shadow") && lightBuried(scene_, models_, solids_, light.position)) {
+        // A light inside a solid (outside the room the eye is in) lights nothing the eye sees:
+        // its picture is all shadow, a count of 1 everywhere, and it adds no light.
+        glClearStencil(1);
+        glClear(GL_STENCIL_BUFFER_BIT);
+        glClearStencil(0);
+        f.count("lights_buried");
+        endPass(f, "shadows");
+        f.shadowMask("light-" + std::to_string(order[k]));
+        target_->bind();  // reading the mask may have bound another framebuffer
+        continue;
+      }
       glEnable(GL_SCISSOR_TEST);  // from here on only the light's rectangle is touched
       const bool depthBounds = hasFeature(f.features, Feature::DepthBoundsTest) && clip.depthBounds;
       if (depthBounds) {  // volumes skip pixels whose surface lies in front of or behind the sphere
@@ -402,10 +422,12 @@ class FastRobustShadows final : public Lesson {
     fromFile_ = !scene.file.empty();
     drawn_.clear();
     closed_.clear();
+    objectBounds_.clear();
     casters_.clear();
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
       SceneObject& o = scene_.objects[i];
       drawn_.push_back(std::make_unique<GpuMesh>(o.mesh));
+      objectBounds_.push_back(boundingSphereOf(o.mesh.positions));
       if (!o.casts) {
         closed_.push_back(prepareCaster(o.mesh).report.closed());
         continue;
@@ -473,6 +495,11 @@ class FastRobustShadows final : public Lesson {
         if (checked) caster.volume = {};
         continue;
       }
+      if (solids_.room[caster.object]) {  // convex (solidsSeenFrom checks): nothing inside it is
+        f.count("rooms");                 // in its shadow, and its volume would hold infinity
+        if (checked) caster.volume = {};
+        continue;
+      }
       f.count("casters_case" + std::to_string(choices[c].shadowCase));
       const glm::mat4 model = o.modelAt(f.time);
       const glm::vec4 local = glm::inverse(model) * light.position;  // the light in the caster's space
@@ -535,19 +562,36 @@ class FastRobustShadows final : public Lesson {
     light_.set("light", light);
     light_.set("lightColour", colour);
     light_.set("radius", std::isinf(radius) ? 1e30f : radius);
+    light_.set("twoSided", 1);  // a wall seen from inside a room is lit on the side the eye sees
     light_.set("eye", f.eye);
-    light_.set("shininess", 24.0f);
+    light_.set("shininess", 32.0f);
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
       const SceneObject& o = scene_.objects[i];
       light_.set("model", o.modelAt(f.time));
       light_.set("colour", o.color);
-      if (closed_[i])
+      if (closed_[i] && !cutByNearPlane_[i])
         glEnable(GL_CULL_FACE);  // a closed object's back faces are hidden anyway
-      else
-        glDisable(GL_CULL_FACE);  // an open surface is seen, and blocks light, from both sides
+      else  // an open surface is seen from both sides; a cut one shows its inside through the cut
+        glDisable(GL_CULL_FACE);
       drawn_[i]->draw();
     }
     glEnable(GL_CULL_FACE);
+  }
+
+  // Back-face culling hides the inside of a closed object only while the object is whole on
+  // screen: where the near plane cuts it, the eye looks through the cut at its back faces, and
+  // culling them would show what lies behind the object instead. Only such objects pay for
+  // their back faces.
+  void markCutByNearPlane(Frame& f, const glm::mat4& viewProjection) {
+    const Plane nearPlane = viewFrustumPlanes(viewProjection)[4];
+    const float length = glm::length(glm::vec3(nearPlane));
+    cutByNearPlane_.assign(scene_.objects.size(), false);
+    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+      const BoundingSphere world = worldBounds(objectBounds_[i], scene_.objects[i].modelAt(f.time));
+      cutByNearPlane_[i] =
+          (glm::dot(glm::vec3(nearPlane), world.center) + nearPlane.w) / length < world.radius;
+      f.count("objects_cut_by_near_plane", cutByNearPlane_[i] && closed_[i] ? 1 : 0);
+    }
   }
 
   void drawOverlay(const Frame& f) {
@@ -597,7 +641,11 @@ class FastRobustShadows final : public Lesson {
   bool fromFile_ = false;
   int sceneKey_ = -1;
   std::vector<std::unique_ptr<GpuMesh>> drawn_;
-  std::vector<bool> closed_;  // per object: a closed mesh, drawn with back faces culled
+  std::vector<bool> closed_;                  // per object: a closed mesh, drawn with back faces culled
+  std::vector<BoundingSphere> objectBounds_;  // per object, object space
+  std::vector<glm::mat4> models_;             // per object, this frame
+  SolidsSeen solids_;                         // this frame's rooms
+  std::vector<bool> cutByNearPlane_;          // per object, this frame: back faces drawn
   std::vector<Caster> casters_;
   std::vector<std::pair<std::size_t, CasterVolume>> lightVolumes_;  // the current light's, by caster
   double fillTime_ = 0.0;                                           // and what drawVolumeFill needs

@@ -2,10 +2,14 @@
 // nothing clips; the near plane costs z-pass exactly one entry where it cuts a volume, and the eye
 // inside a volume costs it one everywhere, while z-fail is unaffected; a finite far plane costs
 // z-fail exits, depth clamping gives them back; --stats reports the closed volumes' parts; and a
-// scene file gets one shadow mask per light.
+// scene file gets one shadow mask per light; a bounded light shades as in lesson 16 and adds nothing
+// beyond its radius.
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <string>
 
 #include "lesson_run.h"
@@ -144,9 +148,9 @@ TEST(RobustZFail, ASceneFileGetsAMaskPerLightTheLastOneIsTheFinalStencil) {
     const auto dir = std::filesystem::temp_directory_path() / "stencil-15-robust-zfail" /
                      (std::string(test->name()) + "-masks-" + std::to_string(last));
     std::filesystem::remove_all(dir);
-    const auto r = run("last-" + std::to_string(last),
-                       "--scene " + scene + " --set last=" + std::to_string(last) +
-                           " --mask-out " + dir.string());
+    const auto r =
+        run("last-" + std::to_string(last),
+            "--scene " + scene + " --set last=" + std::to_string(last) + " --mask-out " + dir.string());
     if (!r) GTEST_SKIP() << "no GL context";
     ASSERT_TRUE(std::filesystem::exists(dir / "light-0.png"));
     ASSERT_TRUE(std::filesystem::exists(dir / "light-1.png"));
@@ -160,4 +164,82 @@ TEST(RobustZFail, ASceneFileGetsAMaskPerLightTheLastOneIsTheFinalStencil) {
     EXPECT_EQ(mismatches, 0u) << "the last light's mask is the final stencil";
     EXPECT_GT(shadowed, 1000u);
   }
+}
+
+TEST(RobustZFail, ABoundedLightAddsNothingBeyondItsRadiusAndShadesAsLesson16Does) {
+  // One shading rule for both lessons (shaders/common/light.frag): a point light's radius is
+  // where its light reaches zero. The scene's light (radius 3 at (0, 2.5, 0)) may change only
+  // pixels inside the screen rectangle of its bounding cube; the same scene with the light
+  // turned off is the ambient picture.
+  const std::string file = std::string(SCENES_DIR) + "/hard/light-radius-shades-nothing-beyond.scene";
+  const auto dark = std::filesystem::temp_directory_path() / "stencil-15-robust-zfail" / "light-off.scene";
+  {
+    std::ifstream in(file);
+    std::ofstream out(dark);
+    for (std::string line; std::getline(in, line);)
+      out << (line.rfind("light point", 0) == 0 ? "light point 0 2.5 0 color 0 0 0 radius 3" : line) << "\n";
+  }
+  const auto lit = run("bounded", "--scene " + file), ambient = run("ambient", "--scene " + dark.string());
+  const auto sixteen = runLesson(LESSON_16, "bounded", "--scene " + file);
+  if (!lit || !ambient || !sixteen) GTEST_SKIP() << "no GL context";
+
+  const int w = lit->colour.width, h = lit->colour.height;
+  const glm::mat4 viewProjection = glm::perspective(glm::radians(55.0f), float(w) / float(h), 0.3f, 100.0f) *
+                                   glm::lookAt(glm::vec3(0, 7, 9), glm::vec3(0), glm::vec3(0, 1, 0));
+  glm::vec2 lo(1e9f), hi(-1e9f);
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 offset(corner & 1 ? 3.0f : -3.0f, corner & 2 ? 3.0f : -3.0f, corner & 4 ? 3.0f : -3.0f);
+    const glm::vec4 clip = viewProjection * glm::vec4(glm::vec3(0, 2.5f, 0) + offset, 1.0f);
+    const glm::vec2 pixel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(w, h);
+    lo = glm::min(lo, pixel);
+    hi = glm::max(hi, pixel);
+  }
+  std::size_t outsideChanged = 0, insideChanged = 0, disagree = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y * w + x);
+      // PNG rows run top down, window coordinates bottom up; a pixel's centre is at +0.5.
+      const glm::vec2 centre(float(x) + 0.5f, float(h - 1 - y) + 0.5f);
+      const bool inside = glm::all(glm::greaterThanEqual(centre, lo - 1.0f)) &&
+                          glm::all(glm::lessThanEqual(centre, hi + 1.0f));
+      const bool changed = stencil::testing::differs(lit->colour, ambient->colour, i, 1);
+      (inside ? insideChanged : outsideChanged) += changed;
+      if (drawnAt(*lit, i))  // the background is each lesson's own
+        disagree += stencil::testing::differs(lit->colour, sixteen->colour, i, 2);
+    }
+  EXPECT_EQ(outsideChanged, 0u) << "the light reaches past its radius";
+  EXPECT_GT(insideChanged, 1000u) << "the light lights nothing";
+  EXPECT_EQ(disagree, 0u) << "lessons 15 and 16 shade the scene differently";
+}
+
+TEST(RobustZFail, ARoomIsLitFromInsideWhicheverWayItsFacesPoint) {
+  // The eye and light 0 inside a closed box (a room), light 1 outside a corner: light 0 lights
+  // the walls' inner sides (two-sided receivers: the side the eye sees), light 1 nothing. The
+  // room written as an OBJ facing inwards gives the same picture, in both lessons.
+  const std::string box = std::string(SCENES_DIR) + "/hard/room-eye-inside-a-box.scene";
+  const std::string inward = std::string(SCENES_DIR) + "/hard/room-faces-inward.scene";
+  const auto dark = std::filesystem::temp_directory_path() / "stencil-15-robust-zfail" / "room-dark.scene";
+  {  // the same room with light 0 off: what light 0 adds shows against it
+    std::ifstream in(box);
+    std::ofstream out(dark);
+    for (std::string line; std::getline(in, line);)
+      out << (line.rfind("light point 0.8", 0) == 0 ? "light point 0.8 2.5 0.8 color 0 0 0" : line) << "\n";
+  }
+  const auto lit = run("room", "--scene " + box), off = run("room-dark", "--scene " + dark.string()),
+             fromObj = run("room-inward", "--scene " + inward);
+  const auto sixteen = runLesson(LESSON_16, "room", "--scene " + box),
+             sixteenObj = runLesson(LESSON_16, "room-inward", "--scene " + inward);
+  if (!lit || !off || !fromObj || !sixteen || !sixteenObj) GTEST_SKIP() << "no GL context";
+  const std::size_t pixels = lit->colour.pixels.size() / 4;
+  std::size_t brighter = 0, objDiffers = 0, sixteenDiffers = 0, sixteenObjDiffers = 0;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    brighter += stencil::testing::differs(lit->colour, off->colour, i, 2);
+    objDiffers += stencil::testing::differs(lit->colour, fromObj->colour, i, 2);
+    sixteenDiffers += stencil::testing::differs(lit->colour, sixteen->colour, i, 2);
+    sixteenObjDiffers += stencil::testing::differs(sixteen->colour, sixteenObj->colour, i, 2);
+  }
+  EXPECT_GT(brighter, pixels * 9 / 10) << "light 0 lights the room's inside";
+  EXPECT_EQ(objDiffers, 0u) << "the room facing inwards looks the same";
+  EXPECT_EQ(sixteenDiffers, 0u) << "lesson 16 draws the room as lesson 15 does";
+  EXPECT_EQ(sixteenObjDiffers, 0u);
 }

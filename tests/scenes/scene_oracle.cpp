@@ -65,16 +65,17 @@ int compareLights(const Scene& scene, const std::filesystem::path& masks, glm::i
       result = 2;
       continue;
     }
-    const std::vector<PixelClass> oracle =
-        classifyPixels(objects, scene.lights[i].position, viewProjection, size, scene.lights[i].radius);
+    std::vector<int> surfaces;
+    const std::vector<PixelClass> oracle = classifyPixels(objects, scene.lights[i].position, viewProjection,
+                                                          size, scene.lights[i].radius, &surfaces);
     std::vector<bool> lit(oracle.size());
     for (std::size_t p = 0; p < lit.size(); ++p) {
       const bool receiver = oracle[p] == PixelClass::Lit || oracle[p] == PixelClass::Shadowed;
       lit[p] = receiver && mask.pixels[p] == 255;
     }
-    const OracleReport r = compareWithOracle(oracle, lit, size);
+    const OracleReport r = compareWithOracle(oracle, lit, size, &surfaces);
     Image picture(size.x, size.y, 4);
-    picture.pixels = oraclePicture(oracle, lit, size);
+    picture.pixels = oraclePicture(oracle, lit, size, &surfaces);
     const std::filesystem::path pictureFile = masks / (name + "-oracle.png");
     writePng(pictureFile, picture);
     std::cout << name << " (" << describe(scene.lights[i].position) << "): " << (r.passed() ? "ok" : "FAILED")

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
+#include <limits>
 
 #include "geometry/raycast.h"
 #include "geometry/shadow_oracle.h"
@@ -133,6 +134,50 @@ TEST(Oracle, NothingIsClaimedOnAFaceEdgeOnToTheLight) {
   EXPECT_EQ(centre({0.8f, 3.0f, 0.6f, 1.0f}), PixelClass::Lit);
   EXPECT_EQ(centre({0.8f, 3.0f, 0.4f, 1.0f}), PixelClass::Shadowed) << "behind the face: the box blocks it";
   EXPECT_EQ(centre({1.0f, 0.0f, 0.0f, 0.0f}), PixelClass::OutOfReach) << "a directional light along the face";
+}
+
+}  // namespace
+
+namespace {
+
+// The face of a box a hair turned from a directional light (cos -2e-4): the stencil puts it in
+// the box's own volume, so the ray cast must call it shadowed, though a shadow ray started off
+// it would skim along the face and leave the box.
+TEST(Oracle, ACastersSideTurnedFromTheLightIsShadowed) {
+  const Mesh box = makeCube(1.0f);
+  const glm::vec4 light(glm::normalize(glm::vec3(1.0f, 0.0f, -2e-4f)), 0.0f);
+  const glm::mat4 front = glm::perspective(0.6f, 1.0f, 0.1f, 50.0f) *
+                          glm::lookAt(glm::vec3(0, 0, 6), glm::vec3(0), glm::vec3(0, 1, 0));
+  const glm::ivec2 size(40, 40);
+  std::vector<int> surfaces;
+  const auto classes = classifyPixels({{&box, glm::mat4(1), true, true}}, light, front, size,
+                                      std::numeric_limits<float>::infinity(), &surfaces);
+  std::size_t face = 0, shadowed = 0;
+  for (std::size_t i = 0; i < classes.size(); ++i) {
+    face += surfaces[i] == 0;
+    shadowed += classes[i] == PixelClass::Shadowed;
+    EXPECT_EQ(surfaces[i] == 0, classes[i] != PixelClass::Empty) << "pixel " << i;
+  }
+  EXPECT_GT(face, 100u);
+  EXPECT_EQ(shadowed, face) << "every pixel of the face turned from the light";
+}
+
+// A disagreement is forgiven where the class changes within 3x3, and, given the surfaces the
+// ray cast saw, where the surface changes: a silhouette between two lit surfaces.
+TEST(Oracle, ASilhouetteBetweenTwoLitSurfacesIsAnEdge) {
+  const glm::ivec2 size(5, 5);
+  const std::vector<PixelClass> classes(25, PixelClass::Lit);
+  std::vector<bool> lit(25, true);
+  lit[12] = false;  // the centre pixel reads shadowed
+  std::vector<int> surfaces(25, 0);
+  EXPECT_FALSE(compareWithOracle(classes, lit, size).passed()) << "one surface: not an edge";
+  EXPECT_FALSE(compareWithOracle(classes, lit, size, &surfaces).passed());
+  surfaces[13] = 1;  // another object begins right of the centre
+  EXPECT_TRUE(compareWithOracle(classes, lit, size, &surfaces).passed());
+  EXPECT_EQ(compareWithOracle(classes, lit, size, &surfaces).onEdges, 1u);
+  surfaces[13] = 0;
+  surfaces[24] = 1;  // two pixels away: the centre is not on it
+  EXPECT_FALSE(compareWithOracle(classes, lit, size, &surfaces).passed());
 }
 
 }  // namespace

@@ -332,3 +332,102 @@ TEST(ClosedVolume, RefusesAnOpenMesh) {
   const EdgeAdjacency adjacency = buildEdgeAdjacency(square.indices, square.positions.size());
   EXPECT_THROW(closedVolume(square, adjacency, {0, 1, 0, 0}, kToInfinity), std::invalid_argument);
 }
+
+// ---- more than 255 nested volumes ---------------------------------------------------------------
+
+namespace {
+
+// The winding number of a closed soup of finite triangles (w = 1) around p: the solid angles
+// they subtend, summed, over 4 pi (Van Oosterom and Strackee's formula per triangle).
+double windingNumber(const ShadowVolume& v, const glm::dvec3& p) {
+  double total = 0.0;
+  for (std::size_t i = 0; i + 2 < v.vertices.size(); i += 3) {
+    const glm::dvec3 a = glm::dvec3(glm::vec3(v.vertices[i])) - p,
+                     b = glm::dvec3(glm::vec3(v.vertices[i + 1])) - p,
+                     c = glm::dvec3(glm::vec3(v.vertices[i + 2])) - p;
+    const double la = glm::length(a), lb = glm::length(b), lc = glm::length(c);
+    const double numerator = glm::dot(a, glm::cross(b, c));
+    const double denominator = la * lb * lc + glm::dot(a, b) * lc + glm::dot(b, c) * la + glm::dot(c, a) * lb;
+    total += 2.0 * std::atan2(numerator, denominator);
+  }
+  return total / (4.0 * M_PI);
+}
+
+}  // namespace
+
+TEST(NestedVolumes, ConvexCastersAreTheConvexOnes) {
+  const auto convex = [](const Mesh& m) {
+    const Mesh welded = weldByPosition(m).mesh;
+    return isConvex(welded, buildEdgeAdjacency(welded.indices, welded.positions.size()));
+  };
+  EXPECT_TRUE(convex(makeCube(1.0f)));
+  EXPECT_TRUE(convex(makeSphere(1.0f, 24, 12)));
+  EXPECT_TRUE(convex(makeCylinder(0.5f, 1.0f, 16)));
+  EXPECT_FALSE(convex(makeTorus(1.0f, 0.25f, 16, 8)));
+  EXPECT_FALSE(convex(makeStairs(4, 1.0f, 0.2f, 0.3f)));
+  Mesh two = makeCube(1.0f);  // two cubes apart in one mesh: convex at every edge, not one solid
+  const Mesh other = makeCube(1.0f);
+  for (const std::uint32_t i : other.indices) two.indices.push_back(i + std::uint32_t(two.positions.size()));
+  for (const glm::vec3& p : other.positions) two.positions.push_back(p + glm::vec3(5, 0, 0));
+  two.normals.insert(two.normals.end(), other.normals.begin(), other.normals.end());
+  EXPECT_FALSE(convex(two));
+  EXPECT_FALSE(convex(makePlane(1.0f))) << "open";
+}
+
+TEST(NestedVolumes, PiecesCountWhatTheWholeCasterCounts) {
+  // A staircase of 12 steps (x and y in [-1.2, 1.2], rise = run, its noses on y = x + 0.2) lit
+  // along the line of its noses, a hair below it: a point on that line below the stairs lies
+  // in 12 nested volumes. The winding of the whole closed volume around a point equals the sum
+  // of its pieces' windings, and never exceeds the nesting bound.
+  const Mesh stairs = weldByPosition(makeStairs(12, 1.0f, 0.2f, 0.2f)).mesh;
+  const EdgeAdjacency adjacency = buildEdgeAdjacency(stairs.indices, stairs.positions.size());
+  const glm::vec4 light(60.0f, 60.15f, 0.1f, 1.0f);
+  const float reach = 400.0f;
+  const std::vector<bool> lit = facesLight(stairs, light);
+  const ClosedVolume whole = closedVolume(stairs, adjacency, light, reach);
+  const std::vector<std::vector<bool>> pieces = litFacePieces(lit, 5);
+  std::size_t litCount = 0;
+  for (bool l : lit) litCount += l;
+  ASSERT_EQ(pieces.size(), (litCount + 4) / 5);
+  std::vector<ClosedVolume> pieceVolumes;
+  for (const auto& piece : pieces)
+    pieceVolumes.push_back(closedVolume(stairs, adjacency, light, reach, piece));
+  const std::size_t bound = nestingBound(litCount, whole.silhouetteEdges, false, true);
+  int deepest = 0;
+  for (int i = 0; i < 200; ++i) {
+    // Half on the line of the light through the noses, half spread around the stairs.
+    const double t = -3.0 + 0.0085 * i;
+    const glm::dvec3 p = i % 2 ? glm::dvec3(t, t + 0.15, 0.1)
+                               : glm::dvec3(-2.0 + 0.02 * i, -2.0 + 0.017 * i, -0.4 + 0.004 * i);
+    const double w = windingNumber(whole.triangles, p);
+    double sum = 0.0;
+    for (const ClosedVolume& v : pieceVolumes) sum += windingNumber(v.triangles, p);
+    EXPECT_NEAR(w, std::round(w), 1e-6) << "a closed volume";
+    EXPECT_NEAR(sum, w, 1e-6) << "at " << p.x << " " << p.y << " " << p.z;
+    EXPECT_LE(std::round(w), double(bound));
+    deepest = std::max(deepest, int(std::round(w)));
+  }
+  EXPECT_EQ(deepest, 12) << "below the noses, inside every step's volume";
+}
+
+TEST(NestedVolumes, BoundsAndPlans) {
+  EXPECT_EQ(nestingBound(0, 0, false, true), 0u);
+  EXPECT_EQ(nestingBound(300, 40, true, false), 1u);
+  EXPECT_EQ(nestingBound(300, 40, false, true), 20u);
+  EXPECT_EQ(nestingBound(300, 40, false, false), 300u) << "a light inside the bounds: no half";
+  EXPECT_EQ(nestingBound(7, 40, false, true), 7u);
+
+  const CountPlan plain = countPlan(std::vector<std::size_t>(255, 1));
+  EXPECT_FALSE(plain.fold);
+  EXPECT_EQ(plain.groups, 1);
+  const CountPlan folded = countPlan(std::vector<std::size_t>(1000, 1));
+  EXPECT_TRUE(folded.fold);
+  EXPECT_EQ(folded.groups, 8);  // ceil(1000 / 127)
+  EXPECT_EQ(folded.group[126], 0);
+  EXPECT_EQ(folded.group[127], 1);
+  const CountPlan mixed = countPlan({100, 100, 100});
+  EXPECT_EQ(mixed.group, (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(countPlan({}).groups, 0);
+  EXPECT_THROW(litFacePieces({true}, 0), std::invalid_argument);
+  EXPECT_TRUE(litFacePieces({false, false}, 3).empty());
+}
