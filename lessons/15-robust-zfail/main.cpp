@@ -224,7 +224,14 @@ class RobustZFail final : public Lesson {
         light_("common/light.vert", "common/light.frag"),
         volume_("15-robust-zfail/volume.vert", "common/flat.frag") {
     checkRequirements(scene_);
-    for (const SceneObject& o : scene_.objects) gpu_.push_back(std::make_unique<GpuMesh>(o.mesh));
+    for (const SceneObject& o : scene_.objects) {
+      gpu_.push_back(std::make_unique<GpuMesh>(o.mesh));
+      const bool closed = o.casts && o.caster.report.closed();
+      convex_.push_back(closed && isConvex(o.caster.mesh, o.caster.adjacency));
+      casterBounds_.push_back(closed ? boundingSphereOf(o.caster.mesh.positions) : BoundingSphere{});
+    }
+    window_.upload(
+        {{-1, -1, 0, 1}, {1, -1, 0, 1}, {1, 1, 0, 1}, {-1, -1, 0, 1}, {1, 1, 0, 1}, {-1, 1, 0, 1}});
   }
 
   void render(Frame& f) override {
@@ -280,7 +287,20 @@ class RobustZFail final : public Lesson {
           glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
         }
         if (f.on("depth-clamp")) glEnable(GL_DEPTH_CLAMP);  // beyond the far plane: depth 1, not clipped
-        drawVolumes(f, i, glm::vec4(0));
+        const CountPlan plan = countPlan(pieceBounds(i));
+        if (!plan.fold) {
+          drawVolumes(f, i, glm::vec4(0));
+        } else {
+          // More than 255 nested volumes could wrap the count to 0 (lit). Count in groups that
+          // cannot pass 127, in the low 7 bits, and fold each group into bit 7: shadowed.
+          for (int g = 0; g < plan.groups; ++g) {
+            glStencilMask(0x7F);  // bit 7 keeps what the groups before found
+            drawVolumes(f, i, glm::vec4(0), &plan, g);
+            foldCount(f.on("zpass"));
+          }
+          glStencilMask(0xFF);
+          f.count("count_groups", static_cast<std::uint64_t>(plan.groups));
+        }
         glDisable(GL_DEPTH_CLAMP);
         f.pass("volumes");
         f.shadowMask("light-" + std::to_string(lights[i].index));  // under --mask-out: this light's mask
@@ -367,6 +387,9 @@ class RobustZFail final : public Lesson {
     const float reach = extrusionReach(f, models, worldLight);
     std::size_t slot = lightIndex * scene_.objects.size();
     if (volumes_.size() < slot + scene_.objects.size()) volumes_.resize(slot + scene_.objects.size());
+    if (pieces_.size() <= lightIndex) pieces_.resize(lightIndex + 1);
+    std::vector<VolumePiece>& pieces = pieces_[lightIndex];
+    pieces.clear();
     for (std::size_t i = 0; i < scene_.objects.size(); ++i, ++slot) {
       const SceneObject& o = scene_.objects[i];
       if (!volumes_[slot]) volumes_[slot] = std::make_unique<GpuTriangles>();
@@ -378,25 +401,79 @@ class RobustZFail final : public Lesson {
       }
       const glm::vec4 light = glm::inverse(models[i]) * worldLight;
       const ClosedVolume v = closedVolume(o.caster.mesh, o.caster.adjacency, light, reach);
-      std::vector<glm::vec4> vertices = v.triangles.vertices;
-      if (!f.on("caps")) vertices.resize(3 * v.sideTriangles);  // the sides come first
-      volumes_[slot]->upload(vertices);
       f.count("silhouette_edges", v.silhouetteEdges);
       f.count("side_triangles", v.sideTriangles);
       f.count("light_cap_triangles", v.lightCapTriangles);
       f.count("dark_cap_triangles", v.darkCapTriangles);
+      // How deep this volume can nest (geometry/shadow_volume.h): past a group's 127, the
+      // caster is counted in pieces of its light cap instead, each at most 127 deep.
+      const BoundingSphere& b = casterBounds_[i];
+      const bool outside = light.w == 0.0f || glm::distance(glm::vec3(light) / light.w, b.center) > b.radius;
+      const std::size_t nesting = nestingBound(v.lightCapTriangles, v.silhouetteEdges, convex_[i], outside);
+      std::vector<ClosedVolume> parts;
+      if (nesting <= 127) {
+        parts.push_back(v);
+      } else {
+        for (const std::vector<bool>& lit : litFacePieces(facesLight(o.caster.mesh, light), 127))
+          parts.push_back(closedVolume(o.caster.mesh, o.caster.adjacency, light, reach, lit));
+        f.count("volume_pieces", parts.size());
+      }
+      std::vector<glm::vec4> vertices;
+      for (const ClosedVolume& part : parts) {
+        const auto first = static_cast<GLint>(vertices.size());
+        // Without caps only the sides, which come first.
+        const std::size_t triangles = f.on("caps") ? part.triangles.triangleCount() : part.sideTriangles;
+        vertices.insert(vertices.end(), part.triangles.vertices.begin(),
+                        part.triangles.vertices.begin() + static_cast<std::ptrdiff_t>(3 * triangles));
+        pieces.push_back({i, first, static_cast<GLsizei>(3 * triangles),
+                          parts.size() == 1 ? nesting : std::min<std::size_t>(part.lightCapTriangles, 127)});
+      }
+      volumes_[slot]->upload(vertices);
     }
     volumeModels_ = models;
   }
 
-  void drawVolumes(const Frame& f, std::size_t lightIndex, glm::vec4 colour) {
+  // One light's volumes; with a plan, only the pieces of group `group`.
+  void drawVolumes(const Frame& f, std::size_t lightIndex, glm::vec4 colour, const CountPlan* plan = nullptr,
+                   int group = 0) {
     volume_.set("viewProjection", f.projection * f.view);
     volume_.set("colour", colour);
-    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-      if (!scene_.objects[i].casts) continue;
-      volume_.set("model", volumeModels_[i]);
-      frontFaceFor(volumeModels_[i]);
-      volumes_[lightIndex * scene_.objects.size() + i]->draw();
+    const std::vector<VolumePiece>& pieces = pieces_[lightIndex];
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      if (plan && plan->group[k] != group) continue;
+      const VolumePiece& p = pieces[k];
+      volume_.set("model", volumeModels_[p.object]);
+      frontFaceFor(volumeModels_[p.object]);
+      volumes_[lightIndex * scene_.objects.size() + p.object]->draw(p.first, p.count);
+    }
+  }
+
+  std::vector<std::size_t> pieceBounds(std::size_t lightIndex) const {
+    std::vector<std::size_t> bounds;
+    for (const VolumePiece& p : pieces_[lightIndex]) bounds.push_back(p.nesting);
+    return bounds;
+  }
+
+  // Where a group's count (bits 0-6) is not 0, the pixel is in a shadow: set bit 7 and clear the
+  // count for the next group. A rectangle over the whole window, testing only the stencil; then
+  // the counting state again.
+  void foldCount(bool zpass) {
+    glStencilMask(0xFF);
+    glStencilFunc(GL_NOTEQUAL, 0x80, 0x7F);     // (0x80 & 0x7F) = 0 != count: counted something
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);  // 0x80: shadowed, count 0
+    glDisable(GL_DEPTH_TEST);
+    volume_.set("viewProjection", glm::mat4(1.0f));
+    volume_.set("model", glm::mat4(1.0f));
+    glFrontFace(GL_CCW);
+    window_.draw();
+    glEnable(GL_DEPTH_TEST);
+    glStencilFunc(GL_ALWAYS, 0, 0xFF);
+    if (zpass) {
+      glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+      glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+    } else {
+      glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+      glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
     }
   }
 
@@ -467,7 +544,19 @@ class RobustZFail final : public Lesson {
   bool mirroredView_ = false;
   Program light_, volume_;
   std::vector<std::unique_ptr<GpuMesh>> gpu_;
-  SolidsSeen solids_;                                   // this frame's rooms
+  SolidsSeen solids_;  // this frame's rooms
+  // A run of one object's volume vertices, counted together: the whole volume, or one piece of
+  // a caster whose volume could nest deeper than a count group's 127.
+  struct VolumePiece {
+    std::size_t object;
+    GLint first;
+    GLsizei count;
+    std::size_t nesting;  // the most this piece can add to a pixel's count
+  };
+  std::vector<std::vector<VolumePiece>> pieces_;        // per light
+  std::vector<bool> convex_;                            // per object: a convex caster nests once
+  std::vector<BoundingSphere> casterBounds_;            // per object, object space
+  GpuTriangles window_;                                 // the whole window, for folding the count
   std::vector<std::unique_ptr<GpuTriangles>> volumes_;  // per light, per object (empty for non-casters)
   std::vector<glm::mat4> volumeModels_;
   GpuLines silhouettes_;
