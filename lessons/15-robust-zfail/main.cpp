@@ -13,6 +13,10 @@
 //     glm::infinitePerspective), the volumes are pushed to infinity (w = 0, which needs w >= 0
 //     everywhere and an ideal light: a point or a direction), and Pinf loses only n/f of the
 //     depth range. Or the far plane stays finite and depth clamping keeps what lies beyond it.
+// Where the driver has clip control (core in GL 4.5) the depth buffer is a float and the depth
+// reversed: 1 at the near plane, n/d at distance d, 0 at infinity. A 24-bit buffer with GL's
+// mapping 1 - n/d has steps of d^2/n * 2^-24 units, too coarse for a small near plane; a float
+// holding n/d keeps about 2^-24 of d at every distance. The variant pinf-fixed24 keeps the old path.
 // One pass with two-sided stencil and wrapping counts both kinds of faces. Each light then
 // adds its light where its count is zero, over one ambient pass. The scene is a Scene
 // (geometry/scene.h): the one built in below, or one read from a file with --scene.
@@ -24,6 +28,7 @@
 #include <string>
 
 #include "geometry/bounds.h"
+#include "geometry/projection.h"
 #include "geometry/scene.h"
 #include "geometry/shadow_volume.h"
 #include "geometry/shapes.h"
@@ -117,6 +122,12 @@ LessonInfo lessonInfo() {
   const std::vector<Feature> clamp = {Feature::DepthClamp};
   info.variants = {
       {"zfail", "z-fail, the far plane at infinity, two-sided wrapping stencil", {{"lights", 1}}},
+      {"pinf-fixed24",
+       "the same on the old path: a 24-bit fixed-point depth buffer with GL's depth mapping (Pinf)",
+       {{"lights", 1}},
+       {},
+       {},
+       false},
       {"zpass",
        "z-pass with the same view: where nothing clips, the very same counts",
        {{"lights", 1}, {"zpass", 1}}},
@@ -163,6 +174,7 @@ LessonInfo lessonInfo() {
   info.shadows = true;
   info.passes = {"ambient", "volumes", "lit", "show-volumes", "silhouettes"};
   info.camera = pinfCamera();
+  info.reversedDepth = true;  // a float depth buffer, reversed, where the driver has clip control
   return info;
 }
 
@@ -235,9 +247,13 @@ class RobustZFail final : public Lesson {
   }
 
   void render(Frame& f) override {
+    // 0. The depth mapping, before anything is cleared or drawn. Reversed (Frame::reversedDepth):
+    // window depth is clip z / w with no remapping, 1 at the near plane and n/d at distance d,
+    // which the float depth buffer holds to about 2^-24 of d at every distance.
+    setDepthMapping(f);
     glClearColor(0.1f, 0.1f, 0.13f, 1.0f);
     glClearStencil(0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);  // depth: the farthest
     const std::vector<glm::mat4> models = modelsAt(f.time);
     const std::vector<ShiningLight> lights = lightsInOrder(f);
     mirroredView_ = glm::determinant(glm::mat3(f.view)) < 0.0f;
@@ -247,7 +263,7 @@ class RobustZFail final : public Lesson {
 
     // 1. Ambient light everywhere, filling the depth buffer that every later pass tests against.
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    glDepthFunc(less_);  // the nearest surface wins
     // Both sides: where the near plane cuts into a closed object, its inside shows, as the
     // oracle's ray cast sees it (culled, the background would show through it).
     glDisable(GL_CULL_FACE);
@@ -286,7 +302,8 @@ class RobustZFail final : public Lesson {
           glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
           glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
         }
-        if (f.on("depth-clamp")) glEnable(GL_DEPTH_CLAMP);  // beyond the far plane: depth 1, not clipped
+        if (f.on("depth-clamp"))
+          glEnable(GL_DEPTH_CLAMP);  // beyond the far plane: the far depth, not clipped
         const CountPlan plan = countPlan(pieceBounds(i));
         if (!plan.fold) {
           drawVolumes(f, i, glm::vec4(0));
@@ -317,7 +334,7 @@ class RobustZFail final : public Lesson {
                 lights[i].light.radius);
       glDisable(GL_BLEND);
       glDisable(GL_STENCIL_TEST);
-      glDepthFunc(GL_LESS);
+      glDepthFunc(less_);
       f.pass("lit");
     }
     glDepthMask(GL_TRUE);
@@ -341,6 +358,22 @@ class RobustZFail final : public Lesson {
   }
 
  private:
+  // Reversed float depth or GL's mapping, as the frame says; every depth comparison follows it.
+  void setDepthMapping(const Frame& f) {
+    if (f.reversedDepth) {
+      glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // window depth = clip z / w: no 0.5 + 0.5 z/w
+      glClearDepth(0.0);                             // the farthest depth is 0 (infinity)
+      less_ = GL_GREATER;                            // nearer is greater
+      lequal_ = GL_GEQUAL;
+      projection_ = reversedDepth(f.projection);  // clip z' = (w - z) / 2: near 1, infinity 0
+    } else {                                      // GL's default clip control, as the framework leaves it
+      glClearDepth(1.0);
+      less_ = GL_LESS;
+      lequal_ = GL_LEQUAL;
+      projection_ = f.projection;
+    }
+  }
+
   std::vector<glm::mat4> modelsAt(double time) const {
     std::vector<glm::mat4> models;
     for (const SceneObject& o : scene_.objects) models.push_back(o.modelAt(time));
@@ -436,7 +469,7 @@ class RobustZFail final : public Lesson {
   // One light's volumes; with a plan, only the pieces of group `group`.
   void drawVolumes(const Frame& f, std::size_t lightIndex, glm::vec4 colour, const CountPlan* plan = nullptr,
                    int group = 0) {
-    volume_.set("viewProjection", f.projection * f.view);
+    volume_.set("viewProjection", projection_ * f.view);
     volume_.set("colour", colour);
     const std::vector<VolumePiece>& pieces = pieces_[lightIndex];
     for (std::size_t k = 0; k < pieces.size(); ++k) {
@@ -491,7 +524,7 @@ class RobustZFail final : public Lesson {
 
     std::vector<glm::vec4> segments;
     volume_.set("colour", glm::vec4(1.0f, 0.95f, 0.3f, 1.0f));
-    glDepthFunc(GL_LEQUAL);  // on the casters' own edges
+    glDepthFunc(lequal_);  // on the casters' own edges
     for (std::size_t c = 0; c < scene_.objects.size(); ++c) {
       const SceneObject& o = scene_.objects[c];
       if (!o.casts) continue;
@@ -508,14 +541,14 @@ class RobustZFail final : public Lesson {
       volume_.set("model", volumeModels_[c]);
       silhouettes_.draw();
     }
-    glDepthFunc(GL_LESS);
+    glDepthFunc(less_);
     glDepthMask(GL_TRUE);
     f.pass("silhouettes");
   }
 
   void drawScene(const Frame& f, const std::vector<glm::mat4>& models, glm::vec3 ambient, glm::vec4 light,
                  glm::vec3 lightColour, float radius) {
-    light_.set("viewProjection", f.projection * f.view);
+    light_.set("viewProjection", projection_ * f.view);
     light_.set("ambient", ambient);
     light_.set("light", light);
     light_.set("lightColour", lightColour);
@@ -542,6 +575,8 @@ class RobustZFail final : public Lesson {
   const Scene& scene_;  // the one drawn
   bool fromFile_;       // a file's lights all shine; the variants pick among the built-in scene's
   bool mirroredView_ = false;
+  GLenum less_ = GL_LESS, lequal_ = GL_LEQUAL;  // the depth tests of this frame's depth mapping
+  glm::mat4 projection_{1.0f};                  // what the frame draws with: f.projection, maybe reversed
   Program light_, volume_;
   std::vector<std::unique_ptr<GpuMesh>> gpu_;
   SolidsSeen solids_;  // this frame's rooms

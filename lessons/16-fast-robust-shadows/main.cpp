@@ -29,6 +29,9 @@
 //   z-fail (2 and 3)  back faces INCR_WRAP where the depth test fails, front faces DECR_WRAP;
 //   light cap         drawn with depth func NEVER: it lies on the caster's own surface, never in
 //                     front of what the depth buffer holds, so it must always take the fail path.
+// Where the driver has clip control (core in GL 4.5) the depth buffer is a float and the depth
+// reversed (1 at the near plane, 0 at infinity; see lesson 15): LESS becomes GREATER, LEQUAL
+// GEQUAL, and a tiny near plane keeps its precision. The variant pinf-fixed24 keeps the old path.
 
 #include <algorithm>
 #include <cmath>
@@ -39,11 +42,13 @@
 
 #include "geometry/bounds.h"
 #include "geometry/fast_shadows.h"
+#include "geometry/projection.h"
 #include "geometry/scene.h"
 #include "geometry/shadow_volume.h"
 #include "geometry/shapes.h"
 #include "gl/doubled_caster.h"
 #include "gl/errors.h"
+#include "gl/framebuffer.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
 #include "gl/recorder.h"
@@ -164,6 +169,14 @@ LessonInfo lessonInfo() {
        "the same accumulated in RGBA8: each light rounded, bands",
        {{"many", 1}, {"float", 0}}},
   };
+  info.variants.push_back({"pinf-fixed24",
+                           "the whole system on the old path: a 24-bit fixed-point depth buffer with GL's "
+                           "depth mapping (Pinf)",
+                           {},
+                           {},
+                           {},
+                           false});
+  info.reversedDepth = true;  // a float depth buffer, reversed, where the driver has clip control
   info.sceneLightOption = "light";
   info.shadows = true;
   info.passes = {"ambient", "shadows", "volume-fill", "illumination", "overlay"};
@@ -226,10 +239,12 @@ Scene builtInScene(int slices, bool many, bool moving) {
 }
 
 // The lesson's own framebuffer: a float (or 8-bit) colour target for the light sum and a packed
-// depth/stencil buffer like the framework's, so depth and stencil copy across unchanged.
+// depth/stencil buffer of the framework's format, so depth and stencil copy across unchanged (a
+// depth/stencil blit needs identical formats).
 class AccumulationTarget {
  public:
-  AccumulationTarget(glm::ivec2 size, bool floating) : size_(size), floating_(floating) {
+  AccumulationTarget(glm::ivec2 size, bool floating, DepthFormat depth)
+      : size_(size), floating_(floating), depth_(depth) {
     glGenFramebuffers(1, &fbo_);
     glGenRenderbuffers(2, renderbuffers_);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
@@ -237,7 +252,7 @@ class AccumulationTarget {
     glRenderbufferStorage(GL_RENDERBUFFER, floating ? GL_RGBA16F : GL_RGBA8, size.x, size.y);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers_[0]);
     glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[1]);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, size.x, size.y);
+    glRenderbufferStorage(GL_RENDERBUFFER, depthStencilFormat(depth), size.x, size.y);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
                               renderbuffers_[1]);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
@@ -250,7 +265,9 @@ class AccumulationTarget {
   AccumulationTarget(const AccumulationTarget&) = delete;
   AccumulationTarget& operator=(const AccumulationTarget&) = delete;
 
-  bool fits(glm::ivec2 size, bool floating) const { return size == size_ && floating == floating_; }
+  bool fits(glm::ivec2 size, bool floating, DepthFormat depth) const {
+    return size == size_ && floating == floating_ && depth == depth_;
+  }
   void bind() const {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     glViewport(0, 0, size_.x, size_.y);
@@ -267,6 +284,7 @@ class AccumulationTarget {
  private:
   glm::ivec2 size_;
   bool floating_;
+  DepthFormat depth_;
   GLuint fbo_ = 0, renderbuffers_[2] = {0, 0};
 };
 
@@ -294,9 +312,17 @@ class FastRobustShadows final : public Lesson {
     GLint framework = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framework);
     framework_ = static_cast<GLuint>(framework);
-    if (!target_ || !target_->fits(f.size, f.on("float")))
-      target_ = std::make_unique<AccumulationTarget>(f.size, f.on("float"));
+    // The depth mapping before anything is cleared or drawn. Reversed (Frame::reversedDepth): window
+    // depth is clip z / w with no remapping, 1 at the near plane and n/d at distance d, which the
+    // float depth buffer holds to about 2^-24 of d at every distance. The framework's framebuffer
+    // has the matching depth format.
+    setDepthMapping(f);
+    const DepthFormat depthFormat = f.reversedDepth ? DepthFormat::Float32 : DepthFormat::Fixed24;
+    if (!target_ || !target_->fits(f.size, f.on("float"), depthFormat))
+      target_ = std::make_unique<AccumulationTarget>(f.size, f.on("float"), depthFormat);
     target_->bind();
+    // Frustum planes, the near rectangle and the light's bounds read GL's convention, not the
+    // reversed matrix the frame draws with.
     const glm::mat4 viewProjection = f.projection * f.view;
     // A mirrored view turns every triangle round on screen: what faces the eye winds clockwise.
     glFrontFace(glm::determinant(f.view) < 0.0f ? GL_CW : GL_CCW);
@@ -304,9 +330,9 @@ class FastRobustShadows final : public Lesson {
     // ---- ambient: the depth buffer filled once, for every light ------------------------------
     glClearColor(0.02f, 0.025f, 0.035f, 1.0f);
     glClearStencil(0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);  // the nearest surface wins
-    glDepthFunc(GL_LESS);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);  // depth: the farthest
+    glEnable(GL_DEPTH_TEST);                                                     // the nearest surface wins
+    glDepthFunc(less_);
     markCutByNearPlane(f, viewProjection);
     // Rooms: a closed caster around the eye is a shell seen from inside (geometry/solid.h).
     models_.clear();
@@ -352,7 +378,10 @@ class FastRobustShadows final : public Lesson {
       const bool depthBounds = hasFeature(f.features, Feature::DepthBoundsTest) && clip.depthBounds;
       if (depthBounds) {  // volumes skip pixels whose surface lies in front of or behind the sphere
         glEnable(GL_DEPTH_BOUNDS_TEST_EXT);
-        glDepthBoundsEXT(clip.depth.nearest, clip.depth.farthest);
+        if (f.reversedDepth)  // the same bounds in reversed depth: d -> 1 - d, the order swapped
+          glDepthBoundsEXT(1.0 - clip.depth.farthest, 1.0 - clip.depth.nearest);
+        else
+          glDepthBoundsEXT(clip.depth.nearest, clip.depth.farthest);
       }
       f.count(depthBounds ? "depth_bounds_used" : "depth_bounds_skipped");
       if (f.on("shadow")) drawShadows(f, light, clip, nearRect, frustum, checked);
@@ -377,7 +406,7 @@ class FastRobustShadows final : public Lesson {
       glDisable(GL_BLEND);
       glDisable(GL_STENCIL_TEST);
       glDisable(GL_SCISSOR_TEST);
-      glDepthFunc(GL_LESS);
+      glDepthFunc(less_);
       glDepthMask(GL_TRUE);
       endPass(f, "illumination");
     }
@@ -448,6 +477,22 @@ class FastRobustShadows final : public Lesson {
     setScene(builtInScene(f.option("slices"), f.on("many"), f.on("moving")));
   }
 
+  // Reversed float depth or GL's mapping, as the frame says; every depth comparison follows it.
+  void setDepthMapping(const Frame& f) {
+    if (f.reversedDepth) {
+      glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // window depth = clip z / w: no 0.5 + 0.5 z/w
+      glClearDepth(0.0);                             // the farthest depth is 0 (infinity)
+      less_ = GL_GREATER;                            // nearer is greater
+      lequal_ = GL_GEQUAL;
+      projection_ = reversedDepth(f.projection);  // clip z' = (w - z) / 2: near 1, infinity 0
+    } else {                                      // GL's default clip control, as the framework leaves it
+      glClearDepth(1.0);
+      less_ = GL_LESS;
+      lequal_ = GL_LEQUAL;
+      projection_ = f.projection;
+    }
+  }
+
   // Every light once, the chosen one last.
   std::vector<int> lightOrder(const Frame& f) const {
     const int n = static_cast<int>(scene_.lights.size());
@@ -482,7 +527,7 @@ class FastRobustShadows final : public Lesson {
 
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // only the stencil changes
     glDepthMask(GL_FALSE);                                // volumes are not surfaces
-    glDepthFunc(GL_LESS);                                 // in front of the scene: pass; behind: fail
+    glDepthFunc(less_);                                   // in front of the scene: pass; behind: fail
     glDisable(GL_CULL_FACE);                              // both faces in one draw, two-sided stencil
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_ALWAYS, 0, 0xFF);  // every volume fragment counts
@@ -513,7 +558,7 @@ class FastRobustShadows final : public Lesson {
       f.count("split_fan_triangles", v.splitTriangles);
       f.count("fan_spheres", static_cast<std::uint64_t>(v.spheres));
 
-      extrude_.set("viewProjection", f.projection * f.view);
+      extrude_.set("viewProjection", projection_ * f.view);
       extrude_.set("model", model);
       extrude_.set("light", local);
       if (!v.zfail) {  // z-pass: count the faces in front of the scene
@@ -523,11 +568,11 @@ class FastRobustShadows final : public Lesson {
       } else {  // z-fail: count the faces behind the scene, the volume closed at both ends
         glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);   // behind: the ray leaves a volume
         glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);  // behind: it enters one
-        caster.gpu->draw(0, v.sides + v.darkCap);  // the dark cap at infinity fails LESS by itself
+        caster.gpu->draw(0, v.sides + v.darkCap);  // the dark cap at infinity fails LESS (GREATER) by itself
         caster.gpu->drawSplit();
         glDepthFunc(GL_NEVER);  // the light cap lies on the caster's surface: never in front of it
         caster.gpu->draw(v.sides + v.darkCap, v.lightCap);
-        glDepthFunc(GL_LESS);
+        glDepthFunc(less_);
       }
       if (checked) caster.volume = v;
       lightVolumes_.push_back({c, v});
@@ -557,7 +602,7 @@ class FastRobustShadows final : public Lesson {
   // ---- the scene -----------------------------------------------------------------------------
 
   void drawScene(const Frame& f, glm::vec4 light, glm::vec3 colour, float radius, glm::vec3 ambient) {
-    light_.set("viewProjection", f.projection * f.view);
+    light_.set("viewProjection", projection_ * f.view);
     light_.set("ambient", ambient);
     light_.set("light", light);
     light_.set("lightColour", colour);
@@ -602,13 +647,16 @@ class FastRobustShadows final : public Lesson {
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
+    glDepthFunc(lequal_);
     glDepthMask(GL_FALSE);  // the overlay changes no depth (and, stencil test off, no stencil)
     glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(-1.0f, -1.0f);  // the tint lies on the caster, drawn by another shader
+    // The tint lies on the caster, drawn by another shader: pulled towards the eye, which is
+    // towards smaller depths in GL's mapping and larger ones reversed.
+    const float towardsEye = f.reversedDepth ? 1.0f : -1.0f;
+    glPolygonOffset(towardsEye, towardsEye);
     for (const Caster& c : casters_) {
       const SceneObject& o = scene_.objects[c.object];
-      flat_.set("transform", f.projection * f.view * o.modelAt(f.time));
+      flat_.set("transform", projection_ * f.view * o.modelAt(f.time));
       flat_.set("colour", caseColour[c.volume.shadowCase]);
       drawn_[c.object]->draw();
     }
@@ -618,7 +666,7 @@ class FastRobustShadows final : public Lesson {
     for (const Caster& c : casters_) {
       if (c.volume.shadowCase == 0) continue;
       const glm::mat4 model = scene_.objects[c.object].modelAt(f.time);
-      extrude_.set("viewProjection", f.projection * f.view);
+      extrude_.set("viewProjection", projection_ * f.view);
       extrude_.set("model", model);
       extrude_.set("light", glm::inverse(model) * light.position);
       glm::vec4 colour = caseColour[c.volume.shadowCase];
@@ -629,14 +677,16 @@ class FastRobustShadows final : public Lesson {
       extrude_.set("colour", glm::vec4(1.0f, 1.0f, 0.6f, 1.0f));
       glDepthFunc(GL_ALWAYS);  // the silhouettes show through their casters
       c.gpu->draw(c.volume.sides + c.volume.darkCap + c.volume.lightCap, c.volume.silhouette, GL_LINES);
-      glDepthFunc(GL_LEQUAL);
+      glDepthFunc(lequal_);
     }
     glDisable(GL_BLEND);
-    glDepthFunc(GL_LESS);
+    glDepthFunc(less_);
     glDepthMask(GL_TRUE);
   }
 
   Program light_, extrude_, flat_;
+  GLenum less_ = GL_LESS, lequal_ = GL_LEQUAL;  // the depth tests of this frame's depth mapping
+  glm::mat4 projection_{1.0f};                  // what the frame draws with: f.projection, maybe reversed
   Scene scene_;
   bool fromFile_ = false;
   int sceneKey_ = -1;
