@@ -324,13 +324,13 @@ std::vector<VolumeChoice> chooseVolumes(ShadowMethod method, const std::vector<B
 }
 
 VolumeIndices casterVolume(const PreparedCaster& caster, const glm::vec4& light, const VolumeChoice& choice,
-                           bool lightCapOn, bool splitFan) {
+                           bool lightCapOn, bool splitFan, const std::vector<bool>* litFaces) {
   VolumeIndices out;
   CasterVolume& v = out.volume;
   v.shadowCase = choice.shadowCase;
   v.zfail = choice.zfail;
   const Mesh& mesh = caster.mesh;
-  const std::vector<bool> lit = facesLight(mesh, light);
+  const std::vector<bool> lit = litFaces ? *litFaces : facesLight(mesh, light);
   // An open mesh (a scene file's) blocks light with both sides of its faces: two volumes.
   const bool twoSided = !caster.report.closed();
   const std::vector<SilhouetteEdge> edges =

@@ -192,8 +192,11 @@ struct VolumeIndices {
   std::vector<std::uint32_t> indices;
   std::vector<glm::vec4> split;
 };
+// litFaces: the faces to take as facing the light instead of all that do (one piece of a closed
+// caster's light cap, shadow_volume.h's litFacePieces); give it with a full-caps z-fail choice.
 VolumeIndices casterVolume(const PreparedCaster& caster, const glm::vec4& light, const VolumeChoice& choice,
-                           bool lightCap = true, bool splitFan = true);
+                           bool lightCap = true, bool splitFan = true,
+                           const std::vector<bool>* litFaces = nullptr);
 
 // A light's bounds for one view: the sphere (radius infinite for a directional light or with
 // bounds off), its scissor rectangle (the whole window when unbounded; empty when off screen)

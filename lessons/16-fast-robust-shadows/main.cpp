@@ -297,6 +297,8 @@ class FastRobustShadows final : public Lesson {
         extrude_("common/extrude.vert", "common/flat.frag"),
         flat_("common/flat.vert", "common/flat.frag") {
     if (fromFile) setScene(*fromFile);
+    window_.upload(
+        {{-1, -1, 0, 1}, {1, -1, 0, 1}, {1, 1, 0, 1}, {-1, -1, 0, 1}, {1, 1, 0, 1}, {-1, 1, 0, 1}});
   }
 
   void render(Frame& f) override {
@@ -444,6 +446,7 @@ class FastRobustShadows final : public Lesson {
     BoundingSphere bounds;  // object space
     std::unique_ptr<DoubledCaster> gpu;
     CasterVolume volume;  // for the light drawn last
+    bool convex = false;  // a convex caster's volume nests once
   };
 
   void setScene(const Scene& scene) {
@@ -463,8 +466,11 @@ class FastRobustShadows final : public Lesson {
       }
       if (o.caster.mesh.positions.empty()) o.caster = prepareCaster(o.mesh);
       closed_.push_back(o.caster.report.closed());
-      casters_.push_back(
-          {i, boundingSphereOf(o.caster.mesh.positions), std::make_unique<DoubledCaster>(o.caster.mesh), {}});
+      casters_.push_back({i,
+                          boundingSphereOf(o.caster.mesh.positions),
+                          std::make_unique<DoubledCaster>(o.caster.mesh),
+                          {},
+                          isConvex(o.caster.mesh, o.caster.adjacency)});
     }
   }
 
@@ -546,39 +552,119 @@ class FastRobustShadows final : public Lesson {
         continue;
       }
       f.count("casters_case" + std::to_string(choices[c].shadowCase));
-      const glm::mat4 model = o.modelAt(f.time);
-      const glm::vec4 local = glm::inverse(model) * light.position;  // the light in the caster's space
-      const VolumeIndices built = casterVolume(o.caster, local, choices[c], f.on("light-cap"), f.on("split"));
-      const CasterVolume& v = built.volume;
-      caster.gpu->upload(built.indices, built.split);
-      if (v.zfail) f.count("casters_zfail");
-      f.count("side_triangles", v.sides / 3);
-      f.count("dark_cap_triangles", v.darkCap / 3 + v.splitVertices / 3);
-      f.count("light_cap_triangles", v.lightCap / 3);
-      f.count("split_fan_triangles", v.splitTriangles);
-      f.count("fan_spheres", static_cast<std::uint64_t>(v.spheres));
-
-      extrude_.set("viewProjection", projection_ * f.view);
-      extrude_.set("model", model);
-      extrude_.set("light", local);
-      if (!v.zfail) {  // z-pass: count the faces in front of the scene
-        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);  // the eye ray enters a volume
-        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);   // and leaves it
-        caster.gpu->draw(0, v.sides);
-      } else {  // z-fail: count the faces behind the scene, the volume closed at both ends
-        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);   // behind: the ray leaves a volume
-        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);  // behind: it enters one
-        caster.gpu->draw(0, v.sides + v.darkCap);  // the dark cap at infinity fails LESS (GREATER) by itself
-        caster.gpu->drawSplit();
-        glDepthFunc(GL_NEVER);  // the light cap lies on the caster's surface: never in front of it
-        caster.gpu->draw(v.sides + v.darkCap, v.lightCap);
-        glDepthFunc(less_);
-      }
-      if (checked) caster.volume = v;
-      lightVolumes_.push_back({c, v});
+      const glm::vec4 local = glm::inverse(o.modelAt(f.time)) * light.position;  // in the caster's space
+      buildVolume(f, c, local, choices[c], checked);
     }
+
+    // Count every volume; where their counts could add past 255 (an 8-bit count would wrap to 0,
+    // lit), in groups that cannot pass 127, each folded into bit 7 (geometry/shadow_volume.h).
+    std::vector<std::size_t> nesting;
+    for (const LightVolume& lv : lightVolumes_) nesting.push_back(lv.nesting);
+    const CountPlan plan = countPlan(nesting);
+    for (int g = 0; g < plan.groups; ++g) {
+      if (plan.fold) glStencilMask(0x7F);  // bit 7 keeps what the groups before found
+      for (std::size_t k = 0; k < lightVolumes_.size(); ++k)
+        if (plan.group[k] == g) countVolume(f, lightVolumes_[k], light.position);
+      if (plan.fold) foldCount();
+    }
+    glStencilMask(0xFF);
+    if (plan.fold) f.count("count_groups", static_cast<std::uint64_t>(plan.groups));
     glDisable(GL_STENCIL_TEST);
     glEnable(GL_CULL_FACE);  // the scene's own culling again
+  }
+
+  // One volume counted for the current light: a caster's whole volume, or one piece of it.
+  struct LightVolume {
+    std::size_t caster;
+    std::size_t first;  // into the caster's uploaded indices
+    CasterVolume volume;
+    std::size_t nesting;  // the most it can add to a pixel's count
+  };
+
+  // One caster's volume for this light, uploaded and listed in lightVolumes_: as the method
+  // chose it, or, where it could nest deeper than a count group's 127, in pieces of its light
+  // cap, each a full-caps z-fail volume (Everitt and Kilgard's caps close any piece).
+  void buildVolume(Frame& f, std::size_t c, const glm::vec4& local, const VolumeChoice& choice,
+                   bool checked) {
+    Caster& caster = casters_[c];
+    const PreparedCaster& prepared = scene_.objects[caster.object].caster;
+    VolumeIndices built = casterVolume(prepared, local, choice, f.on("light-cap"), f.on("split"));
+    const CasterVolume& v = built.volume;
+    const bool closed = prepared.report.closed();
+    const bool outside = local.w == 0.0f || glm::distance(glm::vec3(local) / local.w, caster.bounds.center) >
+                                                caster.bounds.radius;
+    std::size_t nesting = 1;
+    if (!caster.convex) {
+      std::size_t lit = 0;
+      for (bool l : facesLight(prepared.mesh, local)) lit += l;
+      // An open caster casts from both sides, and a fold of it changes the count by two.
+      nesting = closed ? nestingBound(lit, v.silhouette / 2, false, outside)
+                       : nestingBound(prepared.mesh.indices.size() / 3, v.silhouette, false, outside);
+    }
+    std::vector<LightVolume> volumes{{c, 0, v, nesting}};
+    if (nesting > 127 && closed) {
+      volumes.clear();
+      std::vector<std::uint32_t> indices;
+      const VolumeChoice full{choice.shadowCase, true, true};
+      for (const std::vector<bool>& piece : litFacePieces(facesLight(prepared.mesh, local), 127)) {
+        const VolumeIndices p = casterVolume(prepared, local, full, true, false, &piece);
+        std::size_t pieceLit = 0;
+        for (bool l : piece) pieceLit += l;
+        volumes.push_back({c, indices.size(), p.volume, pieceLit});
+        indices.insert(indices.end(), p.indices.begin(), p.indices.end());
+      }
+      built = {volumes.empty() ? CasterVolume{} : volumes.front().volume, indices, {}};
+      f.count("volume_pieces", volumes.size());
+    }
+    caster.gpu->upload(built.indices, built.split);
+    for (const LightVolume& lv : volumes) {
+      const CasterVolume& pv = lv.volume;
+      if (pv.zfail) f.count("casters_zfail");
+      f.count("side_triangles", pv.sides / 3);
+      f.count("dark_cap_triangles", pv.darkCap / 3 + pv.splitVertices / 3);
+      f.count("light_cap_triangles", pv.lightCap / 3);
+      f.count("split_fan_triangles", pv.splitTriangles);
+      f.count("fan_spheres", static_cast<std::uint64_t>(pv.spheres));
+      lightVolumes_.push_back(lv);
+    }
+    if (checked) caster.volume = volumes.front().volume;
+  }
+
+  // One volume counted: z-pass in front of the scene, or z-fail behind it.
+  void countVolume(const Frame& f, const LightVolume& lv, const glm::vec4& worldLight) {
+    const Caster& caster = casters_[lv.caster];
+    const glm::mat4 model = scene_.objects[caster.object].modelAt(f.time);
+    const CasterVolume& v = lv.volume;
+    extrude_.set("viewProjection", projection_ * f.view);
+    extrude_.set("model", model);
+    extrude_.set("light", glm::inverse(model) * worldLight);
+    if (!v.zfail) {  // z-pass: count the faces in front of the scene
+      glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);  // the eye ray enters a volume
+      glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);   // and leaves it
+      caster.gpu->draw(lv.first, v.sides);
+    } else {  // z-fail: count the faces behind the scene, the volume closed at both ends
+      glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);   // behind: the ray leaves a volume
+      glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);  // behind: it enters one
+      caster.gpu->draw(lv.first,
+                       v.sides + v.darkCap);  // the dark cap at infinity fails LESS (GREATER) by itself
+      if (lv.first == 0) caster.gpu->drawSplit();
+      glDepthFunc(GL_NEVER);  // the light cap lies on the caster's surface: never in front of it
+      caster.gpu->draw(lv.first + v.sides + v.darkCap, v.lightCap);
+      glDepthFunc(less_);
+    }
+  }
+
+  // Where a group's count (bits 0-6) is not 0, the pixel is in a shadow: set bit 7 and clear the
+  // count for the next group. A rectangle over the whole window, testing only the stencil.
+  void foldCount() {
+    glStencilMask(0xFF);
+    glStencilFunc(GL_NOTEQUAL, 0x80, 0x7F);     // (0x80 & 0x7F) = 0 != count: counted something
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);  // 0x80: shadowed, count 0
+    glDisable(GL_DEPTH_TEST);
+    flat_.set("transform", glm::mat4(1.0f));  // the rectangle is in clip space already
+    window_.draw();
+    glEnable(GL_DEPTH_TEST);
+    glStencilFunc(GL_ALWAYS, 0, 0xFF);
   }
 
   // The light's volumes once more, every fragment passing: nothing written, only counted by the
@@ -588,12 +674,13 @@ class FastRobustShadows final : public Lesson {
     glDepthMask(GL_FALSE);
     glDisable(GL_DEPTH_TEST);  // in front of the scene or behind, every fragment is fill
     glDisable(GL_CULL_FACE);
-    for (const auto& [c, v] : lightVolumes_) {
-      const SceneObject& o = scene_.objects[casters_[c].object];
+    for (const LightVolume& lv : lightVolumes_) {
+      const SceneObject& o = scene_.objects[casters_[lv.caster].object];
+      const CasterVolume& v = lv.volume;
       extrude_.set("model", o.modelAt(fillTime_));
       extrude_.set("light", glm::inverse(o.modelAt(fillTime_)) * fillLight_);
-      casters_[c].gpu->draw(0, v.sides + v.darkCap + v.lightCap);
-      casters_[c].gpu->drawSplit();
+      casters_[lv.caster].gpu->draw(lv.first, v.sides + v.darkCap + v.lightCap);
+      if (lv.first == 0) casters_[lv.caster].gpu->drawSplit();
     }
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);
@@ -697,8 +784,9 @@ class FastRobustShadows final : public Lesson {
   SolidsSeen solids_;                         // this frame's rooms
   std::vector<bool> cutByNearPlane_;          // per object, this frame: back faces drawn
   std::vector<Caster> casters_;
-  std::vector<std::pair<std::size_t, CasterVolume>> lightVolumes_;  // the current light's, by caster
-  double fillTime_ = 0.0;                                           // and what drawVolumeFill needs
+  std::vector<LightVolume> lightVolumes_;  // the current light's
+  GpuTriangles window_;                    // the whole window, for folding the count
+  double fillTime_ = 0.0;                  // and what drawVolumeFill needs
   glm::vec4 fillLight_{0.0f};
   std::unique_ptr<AccumulationTarget> target_;
   GLuint framework_ = 0;
