@@ -78,6 +78,14 @@ std::vector<std::uint32_t> backFaceDarkCapIndices(const Mesh& welded, const std:
   return indices;
 }
 
+std::vector<std::uint32_t> pieceDarkCapIndices(const Mesh& welded, const std::vector<bool>& lit) {
+  const auto n = static_cast<std::uint32_t>(welded.positions.size());
+  std::vector<std::uint32_t> indices;
+  for (std::size_t t = 0; t < lit.size(); ++t)
+    if (lit[t]) addTriangle(indices, welded, t, n, true);
+  return indices;
+}
+
 float spanDegrees(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
   if (glm::length(a) == 0.0f || glm::length(b) == 0.0f || glm::length(c) == 0.0f) return 180.0f;
   const glm::dvec3 u[3] = {glm::normalize(glm::dvec3(a)), glm::normalize(glm::dvec3(b)),
@@ -324,13 +332,13 @@ std::vector<VolumeChoice> chooseVolumes(ShadowMethod method, const std::vector<B
 }
 
 VolumeIndices casterVolume(const PreparedCaster& caster, const glm::vec4& light, const VolumeChoice& choice,
-                           bool lightCapOn, bool splitFan) {
+                           bool lightCapOn, bool splitFan, const std::vector<bool>* litFaces) {
   VolumeIndices out;
   CasterVolume& v = out.volume;
   v.shadowCase = choice.shadowCase;
   v.zfail = choice.zfail;
   const Mesh& mesh = caster.mesh;
-  const std::vector<bool> lit = facesLight(mesh, light);
+  const std::vector<bool> lit = litFaces ? *litFaces : facesLight(mesh, light);
   // An open mesh (a scene file's) blocks light with both sides of its faces: two volumes.
   const bool twoSided = !caster.report.closed();
   const std::vector<SilhouetteEdge> edges =
@@ -347,7 +355,7 @@ VolumeIndices casterVolume(const PreparedCaster& caster, const glm::vec4& light,
   if (v.zfail && !directional) {  // a directional light's far ends are one point: no dark cap
     std::vector<std::uint32_t> dark;
     if (fullCaps) {
-      dark = backFaceDarkCapIndices(mesh, lit, twoSided);
+      dark = litFaces ? pieceDarkCapIndices(mesh, lit) : backFaceDarkCapIndices(mesh, lit, twoSided);
     } else {
       const glm::vec3 point = glm::vec3(light) / light.w;
       DarkCap fan = fanDarkCap(mesh, edges, point, splitFan ? 179.0f : 361.0f);

@@ -50,6 +50,10 @@ std::vector<std::uint32_t> lightCapIndices(const Mesh& welded, const std::vector
 // Everitt and Kilgard's dark cap: the faces away from the light, pushed to infinity (w = 0
 // copies) with their winding, so the cap faces away from the light. O(f) triangles. twoSided:
 // the faces towards the light too, pushed to infinity and turned round.
+// The dark cap of a piece of a light cap (litFacePieces): the piece's own faces pushed to
+// infinity and turned round, which close the piece's sides whatever the rest of the caster does.
+std::vector<std::uint32_t> pieceDarkCapIndices(const Mesh& welded, const std::vector<bool>& lit);
+
 std::vector<std::uint32_t> backFaceDarkCapIndices(const Mesh& welded, const std::vector<bool>& lit,
                                                   bool twoSided = false);
 
@@ -192,8 +196,12 @@ struct VolumeIndices {
   std::vector<std::uint32_t> indices;
   std::vector<glm::vec4> split;
 };
+// litFaces: the faces to take as facing the light instead of all that do (one piece of a closed
+// caster's light cap, shadow_volume.h's litFacePieces), with a full-caps z-fail choice: its dark
+// cap is then the piece pushed away (pieceDarkCapIndices), O(piece) rather than O(caster).
 VolumeIndices casterVolume(const PreparedCaster& caster, const glm::vec4& light, const VolumeChoice& choice,
-                           bool lightCap = true, bool splitFan = true);
+                           bool lightCap = true, bool splitFan = true,
+                           const std::vector<bool>* litFaces = nullptr);
 
 // A light's bounds for one view: the sphere (radius infinite for a directional light or with
 // bounds off), its scissor rectangle (the whole window when unbounded; empty when off screen)

@@ -109,13 +109,12 @@ ShadowVolume polygonVolumes(const Mesh& mesh, const glm::vec4& light, float dist
   return volume;
 }
 
-ClosedVolume closedVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, const glm::vec4& light,
-                          float distance) {
-  return closedVolume(mesh, adjacency, light, distance, facesLight(mesh, light));
-}
+namespace {
 
-ClosedVolume closedVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, const glm::vec4& light,
-                          float distance, const std::vector<bool>& lit) {
+// The closed volume of the lit faces; its dark cap the other faces pushed away (Everitt and
+// Kilgard's, for the whole light cap) or the lit faces pushed away and turned round (a piece).
+ClosedVolume closedVolumeOf(const Mesh& mesh, const EdgeAdjacency& adjacency, const glm::vec4& light,
+                            float distance, const std::vector<bool>& lit, bool piece) {
   const AdjacencyReport& r = adjacency.report;
   if (r.borderEdges != 0 || r.nonManifoldEdges != 0 || r.inconsistentEdges != 0) {
     throw std::invalid_argument("closedVolume: the caster has " + std::to_string(r.borderEdges) +
@@ -143,11 +142,24 @@ ClosedVolume closedVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, cons
   // out of the volume at its far end. Each vertex goes where the sides' far corners went.
   const bool collapses = light.w == 0.0f && std::isinf(distance);
   for (std::size_t t = 0; t < lit.size() && !collapses; ++t)
-    if (!lit[t])
-      for (int k = 0; k < 3; ++k)
-        v.vertices.push_back(extrudeAway(mesh.positions[mesh.indices[3 * t + k]], light, distance));
+    if (lit[t] == piece)
+      for (int k = 0; k < 3; ++k)  // a piece's own faces turned round: corners 0, 2, 1
+        v.vertices.push_back(
+            extrudeAway(mesh.positions[mesh.indices[3 * t + (piece ? (3 - k) % 3 : k)]], light, distance));
   closed.darkCapTriangles = v.triangleCount() - closed.sideTriangles - closed.lightCapTriangles;
   return closed;
+}
+
+}  // namespace
+
+ClosedVolume closedVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, const glm::vec4& light,
+                          float distance) {
+  return closedVolumeOf(mesh, adjacency, light, distance, facesLight(mesh, light), false);
+}
+
+ClosedVolume closedVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, const glm::vec4& light,
+                          float distance, const std::vector<bool>& lit) {
+  return closedVolumeOf(mesh, adjacency, light, distance, lit, true);
 }
 
 bool isConvex(const Mesh& mesh, const EdgeAdjacency& adjacency, bool facesIn) {

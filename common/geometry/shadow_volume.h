@@ -98,13 +98,13 @@ struct ClosedVolume {
 ClosedVolume closedVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, const glm::vec4& light,
                           float distance);
 
-// The same with the light cap given: `lit` (one flag per triangle) must be a subset of the faces
-// that face the light, such as one piece of litFacePieces. The sides extrude the edges between
-// a lit face and any other, the light cap is the lit faces, and every other face goes to the
-// dark cap. For a light outside the caster the count this volume adds at a point is the number
-// of lit faces the segment from the light to the point crosses: the pieces' counts add up to the
-// whole caster's. Throws as closedVolume does, and std::invalid_argument when lit has the wrong
-// size.
+// The volume of a piece of the light cap: `lit` (one flag per triangle) must be a subset of the
+// faces that face the light, such as one piece of litFacePieces. The sides extrude the edges
+// between a lit face and any other, the light cap is the lit faces, and the dark cap the lit
+// faces pushed away and turned round. The count it adds at a point is the number of lit faces the
+// segment from the light to the point crosses (the sum of the faces' own volumes, whose shared
+// sides cancel): the pieces' counts add up to the whole caster's. Throws as closedVolume does,
+// and std::invalid_argument when lit has the wrong size.
 ClosedVolume closedVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, const glm::vec4& light,
                           float distance, const std::vector<bool>& lit);
 

@@ -58,7 +58,11 @@ void Context::loadGl(GlProc (*getProcAddress)(const char*)) {
   bool gl43 = f.major > 4 || (f.major == 4 && f.minor >= 3);
   f.depthBoundsTest = GLAD_GL_EXT_depth_bounds_test;
   f.pipelineStatistics = GLAD_GL_ARB_pipeline_statistics_query;
-  f.clipControl = GLAD_GL_ARB_clip_control || gl45;
+  // Core in 4.5, where a driver need not list the extension; glad loads the entry point only
+  // for the extension, so load it by name then.
+  if (gl45 && !glad_glClipControl)
+    glad_glClipControl = reinterpret_cast<PFNGLCLIPCONTROLPROC>(getProcAddress("glClipControl"));
+  f.clipControl = (GLAD_GL_ARB_clip_control || gl45) && glad_glClipControl != nullptr;
   f.khrDebug = GLAD_GL_KHR_debug || gl43;
   f.depthClamp = true;  // core since 3.2, so guaranteed by the 3.3 floor
 }

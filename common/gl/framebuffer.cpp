@@ -17,7 +17,16 @@ void flipRows(Image& image) {
 
 }  // namespace
 
-Framebuffer::Framebuffer(int width, int height, int stencilBits) : width_(width), height_(height) {
+GLenum depthStencilFormat(DepthFormat format) {
+  return format == DepthFormat::Float32 ? GL_DEPTH32F_STENCIL8 : GL_DEPTH24_STENCIL8;
+}
+
+const char* depthFormatName(DepthFormat format) {
+  return format == DepthFormat::Float32 ? "float32" : "fixed24";
+}
+
+Framebuffer::Framebuffer(int width, int height, int stencilBits, DepthFormat depthFormat)
+    : width_(width), height_(height), depthFormat_(depthFormat) {
   glGenFramebuffers(1, &fbo_);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   glGenRenderbuffers(1, &colour_);
@@ -27,10 +36,12 @@ Framebuffer::Framebuffer(int width, int height, int stencilBits) : width_(width)
   glGenRenderbuffers(1, &depthStencil_);
   glBindRenderbuffer(GL_RENDERBUFFER, depthStencil_);
   if (stencilBits > 0) {
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
+    glRenderbufferStorage(GL_RENDERBUFFER, depthStencilFormat(depthFormat), width, height);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depthStencil_);
   } else {
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+    glRenderbufferStorage(GL_RENDERBUFFER,
+                          depthFormat == DepthFormat::Float32 ? GL_DEPTH_COMPONENT32F : GL_DEPTH_COMPONENT24,
+                          width, height);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depthStencil_);
   }
   GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);

@@ -1,6 +1,7 @@
 // The off-screen framebuffer every lesson renders into: RGBA8 colour plus a packed
-// depth24/stencil8 attachment. Its stencil bits are verified, never assumed from a
-// pixel format, so every backend gives the same stencil buffer.
+// depth/stencil attachment (24-bit fixed-point depth, or 32-bit float depth for reversed depth).
+// Its stencil bits are verified, never assumed from a pixel format, so every backend gives the
+// same stencil buffer.
 #pragma once
 #include "gl/gl.h"
 #include "gl/image.h"
@@ -10,10 +11,20 @@ namespace stencil {
 // Reads the colour of any framebuffer (0: the window's), RGBA, top row first, opaque.
 Image readColourPixels(GLuint framebuffer, int width, int height);
 
+// The depth buffer's format. Fixed24: GL_DEPTH24_STENCIL8, steps of 2^-24 over [0, 1], every
+// lesson's default. Float32: GL_DEPTH32F_STENCIL8 (core since 3.0), a float per pixel, whose
+// steps shrink towards 0; worth it with reversed depth (geometry/projection.h).
+enum class DepthFormat { Fixed24, Float32 };
+
+// The packed depth/stencil internal format for a DepthFormat (for a lesson's own targets that
+// blit depth and stencil to the framework's, which needs identical formats).
+GLenum depthStencilFormat(DepthFormat);
+const char* depthFormatName(DepthFormat);  // "fixed24", "float32"
+
 class Framebuffer {
  public:
   // stencilBits is 8 for lessons; 0 builds one without stencil (to test the check).
-  Framebuffer(int width, int height, int stencilBits = 8);
+  Framebuffer(int width, int height, int stencilBits = 8, DepthFormat = DepthFormat::Fixed24);
   ~Framebuffer();
   Framebuffer(const Framebuffer&) = delete;
   Framebuffer& operator=(const Framebuffer&) = delete;
@@ -23,6 +34,7 @@ class Framebuffer {
   int height() const { return height_; }
   GLuint id() const { return fbo_; }
   int stencilBits() const { return stencilBits_; }  // as queried from GL
+  DepthFormat depthFormat() const { return depthFormat_; }
 
   Image readColour() const;   // RGBA, top row first, alpha 255
   Image readStencil() const;  // one byte per pixel, top row first
@@ -30,6 +42,7 @@ class Framebuffer {
  private:
   int width_, height_;
   int stencilBits_ = 0;
+  DepthFormat depthFormat_;
   GLuint fbo_ = 0, colour_ = 0, depthStencil_ = 0;
 };
 

@@ -76,9 +76,13 @@ void GpuVertexStream::upload(const std::vector<glm::vec4>& vertices) {
 }
 
 void GpuVertexStream::draw() const {
+  draw(0, vertexCount_);
+}
+
+void GpuVertexStream::draw(GLint first, GLsizei count) const {
   glBindVertexArray(vao_);
-  glDrawArrays(mode_, 0, vertexCount_);
-  countDraw(triangles());
+  glDrawArrays(mode_, first, count);
+  countDraw(mode_ == GL_TRIANGLES ? static_cast<std::uint64_t>(count / 3) : 0);
 }
 
 }  // namespace stencil

@@ -43,6 +43,8 @@ class GpuVertexStream {
   void upload(const std::vector<glm::vec4>& vertices);
   // One draw call, counted by the pass recorder for --stats.
   void draw() const;
+  // One draw call of `count` vertices from `first` (a piece of what was uploaded).
+  void draw(GLint first, GLsizei count) const;
   std::uint64_t triangles() const {
     return mode_ == GL_TRIANGLES ? static_cast<std::uint64_t>(vertexCount_ / 3) : 0;
   }

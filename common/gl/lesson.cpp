@@ -84,13 +84,14 @@ OrbitCamera orbitCameraOf(const SceneCamera& c) {
 }
 
 Frame::Frame(double t, glm::ivec2 s, const OrbitCamera& camera, const std::vector<Option>& options,
-             PassRecorder& recorder, const GlFeatures& f)
+             PassRecorder& recorder, const GlFeatures& f, bool reversed)
     : time(t),
       size(s),
       view(camera.view()),
       projection(camera.projection(static_cast<float>(s.x) / static_cast<float>(s.y))),
       eye(camera.eye()),
       features(f),
+      reversedDepth(reversed),
       options_(options),
       recorder_(recorder) {}
 
@@ -146,11 +147,27 @@ void Session::setVariant(const std::string& name, const std::vector<std::pair<st
   options = optionsFor(info, name, settings);
   variant = name;
   camera = findVariant(info, name).camera.value_or(info.camera);
+  const bool wanted = findVariant(info, name).reversedDepth.value_or(info.reversedDepth);
+  const bool canClip = hasFeature(context->features(), Feature::ClipControl);
+  if (wanted && !canClip && !commandLine.quiet && !toldNoClipControl_) {
+    std::cerr << info.id << ": " << context->features().renderer
+              << " has no ARB_clip_control: reversed float depth is off, the 24-bit depth buffer with "
+                 "GL's mapping instead\n";
+    toldNoClipControl_ = true;
+  }
+  reversedDepth = wanted && canClip;
+  // A variant with another depth format gets a framebuffer of that format (the window switches).
+  if (framebuffer && framebuffer->depthFormat() != depthFormat())
+    makeFramebuffer(framebuffer->width(), framebuffer->height());
+}
+
+DepthFormat Session::depthFormat() const {
+  return reversedDepth ? DepthFormat::Float32 : DepthFormat::Fixed24;
 }
 
 void Session::makeFramebuffer(int width, int height) {
   recorder.reset();
-  framebuffer = std::make_unique<Framebuffer>(width, height, commandLine.stencilBits);
+  framebuffer = std::make_unique<Framebuffer>(width, height, commandLine.stencilBits, depthFormat());
   if (framebuffer->stencilBits() < info.stencilBits)
     throw UsageError("the framebuffer has " + std::to_string(framebuffer->stencilBits()) + " stencil bits; " +
                      info.id + " needs " + std::to_string(info.stencilBits));
@@ -175,9 +192,12 @@ void Session::renderFrame(double time, FrameRequest request) {
   glStencilFunc(GL_ALWAYS, 0, 0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glDepthFunc(GL_LESS);
+  glClearDepth(1.0);
+  if (hasFeature(context->features(), Feature::ClipControl))
+    glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);  // GL's default clip-space depth
   recorder->beginFrame(request);
   Frame frame(time, {framebuffer->width(), framebuffer->height()}, camera, options, *recorder,
-              context->features());
+              context->features(), reversedDepth);
   if (commandLine.maskOut && saveShadowMasks)
     frame.setShadowMaskWriter([this](std::string_view name) {
       const Image stencil = framebuffer->readStencil();
@@ -222,6 +242,8 @@ std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
       << "  \"backend\": \"" << backendName(s.context->backend()) << "\",\n  \"renderer\": \"" << f.renderer
       << "\",\n  \"size\": [" << s.framebuffer->width() << ", " << s.framebuffer->height() << "],\n"
       << "  \"time\": " << s.commandLine.time << ",\n  \"frames\": " << frameMs.size() << ",\n"
+      << "  \"depth\": \"" << depthFormatName(s.framebuffer->depthFormat())
+      << (s.reversedDepth ? "-reversed" : "") << "\",\n"
       << "  \"features\": {\"depth_bounds_test\": " << f.depthBoundsTest
       << ", \"pipeline_statistics\": " << f.pipelineStatistics << ", \"clip_control\": " << f.clipControl
       << ", \"khr_debug\": " << f.khrDebug << ", \"depth_clamp\": " << f.depthClamp << "},\n"

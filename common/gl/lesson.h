@@ -64,6 +64,7 @@ struct Variant {
   std::vector<std::pair<std::string, int>> settings;  // option name, value
   std::vector<Feature> needs = {};                    // beyond what the lesson needs
   std::optional<OrbitCamera> camera = {};             // where the variant needs the eye; else the lesson's
+  std::optional<bool> reversedDepth = {};             // overrides LessonInfo::reversedDepth
 };
 
 struct LessonInfo {
@@ -84,6 +85,13 @@ struct LessonInfo {
   // Frame::shadowMask): only then do --oracle and, for scene lessons, --mask-out apply. Without
   // it they are refused, and --help does not list them.
   bool shadows = false;
+  // Reversed floating-point depth where the driver has ARB_clip_control (core in 4.5): the
+  // framework gives the framebuffer a 32-bit float depth buffer (GL_DEPTH32F_STENCIL8) and sets
+  // Frame::reversedDepth; the lesson makes the GL calls itself (glClipControl with a zero-to-one
+  // depth range, glClearDepth(0), every depth comparison flipped, geometry/projection.h's
+  // reversedDepth on Frame::projection). Without clip control the run says so once and falls back
+  // to the 24-bit fixed-point buffer with GL's default mapping. Off: a 24-bit buffer, as always.
+  bool reversedDepth = false;
 };
 
 class PassRecorder;
@@ -92,13 +100,18 @@ class PassRecorder;
 class Frame {
  public:
   Frame(double time, glm::ivec2 size, const OrbitCamera&, const std::vector<Option>&, PassRecorder&,
-        const GlFeatures&);
+        const GlFeatures&, bool reversedDepth = false);
 
   const double time;  // seconds; every animation is a function of it
   const glm::ivec2 size;
+  // projection is always in GL's default convention (clip z from -w at the near plane to +w at
+  // the far plane), whatever the depth buffer: frustum planes, bounds and the oracle read it so.
   const glm::mat4 view, projection;
   const glm::vec3 eye;
   const GlFeatures& features;
+  // The framebuffer's depth is 32-bit float and the lesson draws with reversed depth
+  // (LessonInfo::reversedDepth, and the driver has clip control); false: 24-bit, GL's mapping.
+  const bool reversedDepth;
 
   int option(std::string_view name) const;  // unknown names throw: a typo is a bug
   bool on(std::string_view name) const { return option(name) != 0; }

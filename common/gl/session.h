@@ -38,10 +38,13 @@ class Session {
   std::optional<ShadowCheck> shadowCheck;  // the last frame's, when --oracle asks for it
   glm::mat4 viewProjection{1.0f};          // the last frame's
   bool saveShadowMasks = false;            // Frame::shadowMask writes under --mask-out (the last frame)
+  bool reversedDepth = false;              // the variant's reversed float depth, where the driver allows it
 
  private:
   void checkNeeds(const std::vector<Feature>&, const std::string& who) const;
   void makeFramebuffer(int width, int height);
+  DepthFormat depthFormat() const;  // the framebuffer's for reversedDepth
+  bool toldNoClipControl_ = false;
 };
 
 // The interactive loop (window_ui.cpp). Returns the exit code.

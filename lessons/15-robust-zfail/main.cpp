@@ -13,6 +13,10 @@
 //     glm::infinitePerspective), the volumes are pushed to infinity (w = 0, which needs w >= 0
 //     everywhere and an ideal light: a point or a direction), and Pinf loses only n/f of the
 //     depth range. Or the far plane stays finite and depth clamping keeps what lies beyond it.
+// Where the driver has clip control (core in GL 4.5) the depth buffer is a float and the depth
+// reversed: 1 at the near plane, n/d at distance d, 0 at infinity. A 24-bit buffer with GL's
+// mapping 1 - n/d has steps of d^2/n * 2^-24 units, too coarse for a small near plane; a float
+// holding n/d keeps about 2^-24 of d at every distance. The variant pinf-fixed24 keeps the old path.
 // One pass with two-sided stencil and wrapping counts both kinds of faces. Each light then
 // adds its light where its count is zero, over one ambient pass. The scene is a Scene
 // (geometry/scene.h): the one built in below, or one read from a file with --scene.
@@ -24,6 +28,7 @@
 #include <string>
 
 #include "geometry/bounds.h"
+#include "geometry/projection.h"
 #include "geometry/scene.h"
 #include "geometry/shadow_volume.h"
 #include "geometry/shapes.h"
@@ -117,6 +122,12 @@ LessonInfo lessonInfo() {
   const std::vector<Feature> clamp = {Feature::DepthClamp};
   info.variants = {
       {"zfail", "z-fail, the far plane at infinity, two-sided wrapping stencil", {{"lights", 1}}},
+      {"pinf-fixed24",
+       "the same on the old path: a 24-bit fixed-point depth buffer with GL's depth mapping (Pinf)",
+       {{"lights", 1}},
+       {},
+       {},
+       false},
       {"zpass",
        "z-pass with the same view: where nothing clips, the very same counts",
        {{"lights", 1}, {"zpass", 1}}},
@@ -163,6 +174,7 @@ LessonInfo lessonInfo() {
   info.shadows = true;
   info.passes = {"ambient", "volumes", "lit", "show-volumes", "silhouettes"};
   info.camera = pinfCamera();
+  info.reversedDepth = true;  // a float depth buffer, reversed, where the driver has clip control
   return info;
 }
 
@@ -224,13 +236,24 @@ class RobustZFail final : public Lesson {
         light_("common/light.vert", "common/light.frag"),
         volume_("15-robust-zfail/volume.vert", "common/flat.frag") {
     checkRequirements(scene_);
-    for (const SceneObject& o : scene_.objects) gpu_.push_back(std::make_unique<GpuMesh>(o.mesh));
+    for (const SceneObject& o : scene_.objects) {
+      gpu_.push_back(std::make_unique<GpuMesh>(o.mesh));
+      const bool closed = o.casts && o.caster.report.closed();
+      convex_.push_back(closed && isConvex(o.caster.mesh, o.caster.adjacency));
+      casterBounds_.push_back(closed ? boundingSphereOf(o.caster.mesh.positions) : BoundingSphere{});
+    }
+    window_.upload(
+        {{-1, -1, 0, 1}, {1, -1, 0, 1}, {1, 1, 0, 1}, {-1, -1, 0, 1}, {1, 1, 0, 1}, {-1, 1, 0, 1}});
   }
 
   void render(Frame& f) override {
+    // 0. The depth mapping, before anything is cleared or drawn. Reversed (Frame::reversedDepth):
+    // window depth is clip z / w with no remapping, 1 at the near plane and n/d at distance d,
+    // which the float depth buffer holds to about 2^-24 of d at every distance.
+    setDepthMapping(f);
     glClearColor(0.1f, 0.1f, 0.13f, 1.0f);
     glClearStencil(0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);  // depth: the farthest
     const std::vector<glm::mat4> models = modelsAt(f.time);
     const std::vector<ShiningLight> lights = lightsInOrder(f);
     mirroredView_ = glm::determinant(glm::mat3(f.view)) < 0.0f;
@@ -240,7 +263,7 @@ class RobustZFail final : public Lesson {
 
     // 1. Ambient light everywhere, filling the depth buffer that every later pass tests against.
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    glDepthFunc(less_);  // the nearest surface wins
     // Both sides: where the near plane cuts into a closed object, its inside shows, as the
     // oracle's ray cast sees it (culled, the background would show through it).
     glDisable(GL_CULL_FACE);
@@ -279,8 +302,22 @@ class RobustZFail final : public Lesson {
           glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
           glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
         }
-        if (f.on("depth-clamp")) glEnable(GL_DEPTH_CLAMP);  // beyond the far plane: depth 1, not clipped
-        drawVolumes(f, i, glm::vec4(0));
+        if (f.on("depth-clamp"))
+          glEnable(GL_DEPTH_CLAMP);  // beyond the far plane: the far depth, not clipped
+        const CountPlan plan = countPlan(pieceBounds(i));
+        if (!plan.fold) {
+          drawVolumes(f, i, glm::vec4(0));
+        } else {
+          // More than 255 nested volumes could wrap the count to 0 (lit). Count in groups that
+          // cannot pass 127, in the low 7 bits, and fold each group into bit 7: shadowed.
+          for (int g = 0; g < plan.groups; ++g) {
+            glStencilMask(0x7F);  // bit 7 keeps what the groups before found
+            drawVolumes(f, i, glm::vec4(0), &plan, g);
+            foldCount(f.on("zpass"));
+          }
+          glStencilMask(0xFF);
+          f.count("count_groups", static_cast<std::uint64_t>(plan.groups));
+        }
         glDisable(GL_DEPTH_CLAMP);
         f.pass("volumes");
         f.shadowMask("light-" + std::to_string(lights[i].index));  // under --mask-out: this light's mask
@@ -297,7 +334,7 @@ class RobustZFail final : public Lesson {
                 lights[i].light.radius);
       glDisable(GL_BLEND);
       glDisable(GL_STENCIL_TEST);
-      glDepthFunc(GL_LESS);
+      glDepthFunc(less_);
       f.pass("lit");
     }
     glDepthMask(GL_TRUE);
@@ -321,6 +358,22 @@ class RobustZFail final : public Lesson {
   }
 
  private:
+  // Reversed float depth or GL's mapping, as the frame says; every depth comparison follows it.
+  void setDepthMapping(const Frame& f) {
+    if (f.reversedDepth) {
+      glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // window depth = clip z / w: no 0.5 + 0.5 z/w
+      glClearDepth(0.0);                             // the farthest depth is 0 (infinity)
+      less_ = GL_GREATER;                            // nearer is greater
+      lequal_ = GL_GEQUAL;
+      projection_ = reversedDepth(f.projection);  // clip z' = (w - z) / 2: near 1, infinity 0
+    } else {                                      // GL's default clip control, as the framework leaves it
+      glClearDepth(1.0);
+      less_ = GL_LESS;
+      lequal_ = GL_LEQUAL;
+      projection_ = f.projection;
+    }
+  }
+
   std::vector<glm::mat4> modelsAt(double time) const {
     std::vector<glm::mat4> models;
     for (const SceneObject& o : scene_.objects) models.push_back(o.modelAt(time));
@@ -367,6 +420,9 @@ class RobustZFail final : public Lesson {
     const float reach = extrusionReach(f, models, worldLight);
     std::size_t slot = lightIndex * scene_.objects.size();
     if (volumes_.size() < slot + scene_.objects.size()) volumes_.resize(slot + scene_.objects.size());
+    if (pieces_.size() <= lightIndex) pieces_.resize(lightIndex + 1);
+    std::vector<VolumePiece>& pieces = pieces_[lightIndex];
+    pieces.clear();
     for (std::size_t i = 0; i < scene_.objects.size(); ++i, ++slot) {
       const SceneObject& o = scene_.objects[i];
       if (!volumes_[slot]) volumes_[slot] = std::make_unique<GpuTriangles>();
@@ -378,25 +434,79 @@ class RobustZFail final : public Lesson {
       }
       const glm::vec4 light = glm::inverse(models[i]) * worldLight;
       const ClosedVolume v = closedVolume(o.caster.mesh, o.caster.adjacency, light, reach);
-      std::vector<glm::vec4> vertices = v.triangles.vertices;
-      if (!f.on("caps")) vertices.resize(3 * v.sideTriangles);  // the sides come first
-      volumes_[slot]->upload(vertices);
       f.count("silhouette_edges", v.silhouetteEdges);
       f.count("side_triangles", v.sideTriangles);
       f.count("light_cap_triangles", v.lightCapTriangles);
       f.count("dark_cap_triangles", v.darkCapTriangles);
+      // How deep this volume can nest (geometry/shadow_volume.h): past a group's 127, the
+      // caster is counted in pieces of its light cap instead, each at most 127 deep.
+      const BoundingSphere& b = casterBounds_[i];
+      const bool outside = light.w == 0.0f || glm::distance(glm::vec3(light) / light.w, b.center) > b.radius;
+      const std::size_t nesting = nestingBound(v.lightCapTriangles, v.silhouetteEdges, convex_[i], outside);
+      std::vector<ClosedVolume> parts;
+      if (nesting <= 127) {
+        parts.push_back(v);
+      } else {
+        for (const std::vector<bool>& lit : litFacePieces(facesLight(o.caster.mesh, light), 127))
+          parts.push_back(closedVolume(o.caster.mesh, o.caster.adjacency, light, reach, lit));
+        f.count("volume_pieces", parts.size());
+      }
+      std::vector<glm::vec4> vertices;
+      for (const ClosedVolume& part : parts) {
+        const auto first = static_cast<GLint>(vertices.size());
+        // Without caps only the sides, which come first.
+        const std::size_t triangles = f.on("caps") ? part.triangles.triangleCount() : part.sideTriangles;
+        vertices.insert(vertices.end(), part.triangles.vertices.begin(),
+                        part.triangles.vertices.begin() + static_cast<std::ptrdiff_t>(3 * triangles));
+        pieces.push_back({i, first, static_cast<GLsizei>(3 * triangles),
+                          parts.size() == 1 ? nesting : std::min<std::size_t>(part.lightCapTriangles, 127)});
+      }
+      volumes_[slot]->upload(vertices);
     }
     volumeModels_ = models;
   }
 
-  void drawVolumes(const Frame& f, std::size_t lightIndex, glm::vec4 colour) {
-    volume_.set("viewProjection", f.projection * f.view);
+  // One light's volumes; with a plan, only the pieces of group `group`.
+  void drawVolumes(const Frame& f, std::size_t lightIndex, glm::vec4 colour, const CountPlan* plan = nullptr,
+                   int group = 0) {
+    volume_.set("viewProjection", projection_ * f.view);
     volume_.set("colour", colour);
-    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-      if (!scene_.objects[i].casts) continue;
-      volume_.set("model", volumeModels_[i]);
-      frontFaceFor(volumeModels_[i]);
-      volumes_[lightIndex * scene_.objects.size() + i]->draw();
+    const std::vector<VolumePiece>& pieces = pieces_[lightIndex];
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      if (plan && plan->group[k] != group) continue;
+      const VolumePiece& p = pieces[k];
+      volume_.set("model", volumeModels_[p.object]);
+      frontFaceFor(volumeModels_[p.object]);
+      volumes_[lightIndex * scene_.objects.size() + p.object]->draw(p.first, p.count);
+    }
+  }
+
+  std::vector<std::size_t> pieceBounds(std::size_t lightIndex) const {
+    std::vector<std::size_t> bounds;
+    for (const VolumePiece& p : pieces_[lightIndex]) bounds.push_back(p.nesting);
+    return bounds;
+  }
+
+  // Where a group's count (bits 0-6) is not 0, the pixel is in a shadow: set bit 7 and clear the
+  // count for the next group. A rectangle over the whole window, testing only the stencil; then
+  // the counting state again.
+  void foldCount(bool zpass) {
+    glStencilMask(0xFF);
+    glStencilFunc(GL_NOTEQUAL, 0x80, 0x7F);     // (0x80 & 0x7F) = 0 != count: counted something
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);  // 0x80: shadowed, count 0
+    glDisable(GL_DEPTH_TEST);
+    volume_.set("viewProjection", glm::mat4(1.0f));
+    volume_.set("model", glm::mat4(1.0f));
+    glFrontFace(GL_CCW);
+    window_.draw();
+    glEnable(GL_DEPTH_TEST);
+    glStencilFunc(GL_ALWAYS, 0, 0xFF);
+    if (zpass) {
+      glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+      glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+    } else {
+      glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+      glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
     }
   }
 
@@ -414,7 +524,7 @@ class RobustZFail final : public Lesson {
 
     std::vector<glm::vec4> segments;
     volume_.set("colour", glm::vec4(1.0f, 0.95f, 0.3f, 1.0f));
-    glDepthFunc(GL_LEQUAL);  // on the casters' own edges
+    glDepthFunc(lequal_);  // on the casters' own edges
     for (std::size_t c = 0; c < scene_.objects.size(); ++c) {
       const SceneObject& o = scene_.objects[c];
       if (!o.casts) continue;
@@ -431,14 +541,14 @@ class RobustZFail final : public Lesson {
       volume_.set("model", volumeModels_[c]);
       silhouettes_.draw();
     }
-    glDepthFunc(GL_LESS);
+    glDepthFunc(less_);
     glDepthMask(GL_TRUE);
     f.pass("silhouettes");
   }
 
   void drawScene(const Frame& f, const std::vector<glm::mat4>& models, glm::vec3 ambient, glm::vec4 light,
                  glm::vec3 lightColour, float radius) {
-    light_.set("viewProjection", f.projection * f.view);
+    light_.set("viewProjection", projection_ * f.view);
     light_.set("ambient", ambient);
     light_.set("light", light);
     light_.set("lightColour", lightColour);
@@ -465,9 +575,23 @@ class RobustZFail final : public Lesson {
   const Scene& scene_;  // the one drawn
   bool fromFile_;       // a file's lights all shine; the variants pick among the built-in scene's
   bool mirroredView_ = false;
+  GLenum less_ = GL_LESS, lequal_ = GL_LEQUAL;  // the depth tests of this frame's depth mapping
+  glm::mat4 projection_{1.0f};                  // what the frame draws with: f.projection, maybe reversed
   Program light_, volume_;
   std::vector<std::unique_ptr<GpuMesh>> gpu_;
-  SolidsSeen solids_;                                   // this frame's rooms
+  SolidsSeen solids_;  // this frame's rooms
+  // A run of one object's volume vertices, counted together: the whole volume, or one piece of
+  // a caster whose volume could nest deeper than a count group's 127.
+  struct VolumePiece {
+    std::size_t object;
+    GLint first;
+    GLsizei count;
+    std::size_t nesting;  // the most this piece can add to a pixel's count
+  };
+  std::vector<std::vector<VolumePiece>> pieces_;        // per light
+  std::vector<bool> convex_;                            // per object: a convex caster nests once
+  std::vector<BoundingSphere> casterBounds_;            // per object, object space
+  GpuTriangles window_;                                 // the whole window, for folding the count
   std::vector<std::unique_ptr<GpuTriangles>> volumes_;  // per light, per object (empty for non-casters)
   std::vector<glm::mat4> volumeModels_;
   GpuLines silhouettes_;

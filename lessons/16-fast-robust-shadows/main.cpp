@@ -29,6 +29,9 @@
 //   z-fail (2 and 3)  back faces INCR_WRAP where the depth test fails, front faces DECR_WRAP;
 //   light cap         drawn with depth func NEVER: it lies on the caster's own surface, never in
 //                     front of what the depth buffer holds, so it must always take the fail path.
+// Where the driver has clip control (core in GL 4.5) the depth buffer is a float and the depth
+// reversed (1 at the near plane, 0 at infinity; see lesson 15): LESS becomes GREATER, LEQUAL
+// GEQUAL, and a tiny near plane keeps its precision. The variant pinf-fixed24 keeps the old path.
 
 #include <algorithm>
 #include <cmath>
@@ -39,11 +42,13 @@
 
 #include "geometry/bounds.h"
 #include "geometry/fast_shadows.h"
+#include "geometry/projection.h"
 #include "geometry/scene.h"
 #include "geometry/shadow_volume.h"
 #include "geometry/shapes.h"
 #include "gl/doubled_caster.h"
 #include "gl/errors.h"
+#include "gl/framebuffer.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
 #include "gl/recorder.h"
@@ -164,6 +169,14 @@ LessonInfo lessonInfo() {
        "the same accumulated in RGBA8: each light rounded, bands",
        {{"many", 1}, {"float", 0}}},
   };
+  info.variants.push_back({"pinf-fixed24",
+                           "the whole system on the old path: a 24-bit fixed-point depth buffer with GL's "
+                           "depth mapping (Pinf)",
+                           {},
+                           {},
+                           {},
+                           false});
+  info.reversedDepth = true;  // a float depth buffer, reversed, where the driver has clip control
   info.sceneLightOption = "light";
   info.shadows = true;
   info.passes = {"ambient", "shadows", "volume-fill", "illumination", "overlay"};
@@ -226,10 +239,12 @@ Scene builtInScene(int slices, bool many, bool moving) {
 }
 
 // The lesson's own framebuffer: a float (or 8-bit) colour target for the light sum and a packed
-// depth/stencil buffer like the framework's, so depth and stencil copy across unchanged.
+// depth/stencil buffer of the framework's format, so depth and stencil copy across unchanged (a
+// depth/stencil blit needs identical formats).
 class AccumulationTarget {
  public:
-  AccumulationTarget(glm::ivec2 size, bool floating) : size_(size), floating_(floating) {
+  AccumulationTarget(glm::ivec2 size, bool floating, DepthFormat depth)
+      : size_(size), floating_(floating), depth_(depth) {
     glGenFramebuffers(1, &fbo_);
     glGenRenderbuffers(2, renderbuffers_);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
@@ -237,7 +252,7 @@ class AccumulationTarget {
     glRenderbufferStorage(GL_RENDERBUFFER, floating ? GL_RGBA16F : GL_RGBA8, size.x, size.y);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers_[0]);
     glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[1]);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, size.x, size.y);
+    glRenderbufferStorage(GL_RENDERBUFFER, depthStencilFormat(depth), size.x, size.y);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
                               renderbuffers_[1]);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
@@ -250,7 +265,9 @@ class AccumulationTarget {
   AccumulationTarget(const AccumulationTarget&) = delete;
   AccumulationTarget& operator=(const AccumulationTarget&) = delete;
 
-  bool fits(glm::ivec2 size, bool floating) const { return size == size_ && floating == floating_; }
+  bool fits(glm::ivec2 size, bool floating, DepthFormat depth) const {
+    return size == size_ && floating == floating_ && depth == depth_;
+  }
   void bind() const {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     glViewport(0, 0, size_.x, size_.y);
@@ -267,6 +284,7 @@ class AccumulationTarget {
  private:
   glm::ivec2 size_;
   bool floating_;
+  DepthFormat depth_;
   GLuint fbo_ = 0, renderbuffers_[2] = {0, 0};
 };
 
@@ -279,6 +297,8 @@ class FastRobustShadows final : public Lesson {
         extrude_("common/extrude.vert", "common/flat.frag"),
         flat_("common/flat.vert", "common/flat.frag") {
     if (fromFile) setScene(*fromFile);
+    window_.upload(
+        {{-1, -1, 0, 1}, {1, -1, 0, 1}, {1, 1, 0, 1}, {-1, -1, 0, 1}, {1, 1, 0, 1}, {-1, 1, 0, 1}});
   }
 
   void render(Frame& f) override {
@@ -294,9 +314,17 @@ class FastRobustShadows final : public Lesson {
     GLint framework = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framework);
     framework_ = static_cast<GLuint>(framework);
-    if (!target_ || !target_->fits(f.size, f.on("float")))
-      target_ = std::make_unique<AccumulationTarget>(f.size, f.on("float"));
+    // The depth mapping before anything is cleared or drawn. Reversed (Frame::reversedDepth): window
+    // depth is clip z / w with no remapping, 1 at the near plane and n/d at distance d, which the
+    // float depth buffer holds to about 2^-24 of d at every distance. The framework's framebuffer
+    // has the matching depth format.
+    setDepthMapping(f);
+    const DepthFormat depthFormat = f.reversedDepth ? DepthFormat::Float32 : DepthFormat::Fixed24;
+    if (!target_ || !target_->fits(f.size, f.on("float"), depthFormat))
+      target_ = std::make_unique<AccumulationTarget>(f.size, f.on("float"), depthFormat);
     target_->bind();
+    // Frustum planes, the near rectangle and the light's bounds read GL's convention, not the
+    // reversed matrix the frame draws with.
     const glm::mat4 viewProjection = f.projection * f.view;
     // A mirrored view turns every triangle round on screen: what faces the eye winds clockwise.
     glFrontFace(glm::determinant(f.view) < 0.0f ? GL_CW : GL_CCW);
@@ -304,9 +332,9 @@ class FastRobustShadows final : public Lesson {
     // ---- ambient: the depth buffer filled once, for every light ------------------------------
     glClearColor(0.02f, 0.025f, 0.035f, 1.0f);
     glClearStencil(0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);  // the nearest surface wins
-    glDepthFunc(GL_LESS);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);  // depth: the farthest
+    glEnable(GL_DEPTH_TEST);                                                     // the nearest surface wins
+    glDepthFunc(less_);
     markCutByNearPlane(f, viewProjection);
     // Rooms: a closed caster around the eye is a shell seen from inside (geometry/solid.h).
     models_.clear();
@@ -352,7 +380,10 @@ class FastRobustShadows final : public Lesson {
       const bool depthBounds = hasFeature(f.features, Feature::DepthBoundsTest) && clip.depthBounds;
       if (depthBounds) {  // volumes skip pixels whose surface lies in front of or behind the sphere
         glEnable(GL_DEPTH_BOUNDS_TEST_EXT);
-        glDepthBoundsEXT(clip.depth.nearest, clip.depth.farthest);
+        if (f.reversedDepth)  // the same bounds in reversed depth: d -> 1 - d, the order swapped
+          glDepthBoundsEXT(1.0 - clip.depth.farthest, 1.0 - clip.depth.nearest);
+        else
+          glDepthBoundsEXT(clip.depth.nearest, clip.depth.farthest);
       }
       f.count(depthBounds ? "depth_bounds_used" : "depth_bounds_skipped");
       if (f.on("shadow")) drawShadows(f, light, clip, nearRect, frustum, checked);
@@ -377,7 +408,7 @@ class FastRobustShadows final : public Lesson {
       glDisable(GL_BLEND);
       glDisable(GL_STENCIL_TEST);
       glDisable(GL_SCISSOR_TEST);
-      glDepthFunc(GL_LESS);
+      glDepthFunc(less_);
       glDepthMask(GL_TRUE);
       endPass(f, "illumination");
     }
@@ -415,6 +446,7 @@ class FastRobustShadows final : public Lesson {
     BoundingSphere bounds;  // object space
     std::unique_ptr<DoubledCaster> gpu;
     CasterVolume volume;  // for the light drawn last
+    bool convex = false;  // a convex caster's volume nests once
   };
 
   void setScene(const Scene& scene) {
@@ -434,8 +466,11 @@ class FastRobustShadows final : public Lesson {
       }
       if (o.caster.mesh.positions.empty()) o.caster = prepareCaster(o.mesh);
       closed_.push_back(o.caster.report.closed());
-      casters_.push_back(
-          {i, boundingSphereOf(o.caster.mesh.positions), std::make_unique<DoubledCaster>(o.caster.mesh), {}});
+      casters_.push_back({i,
+                          boundingSphereOf(o.caster.mesh.positions),
+                          std::make_unique<DoubledCaster>(o.caster.mesh),
+                          {},
+                          isConvex(o.caster.mesh, o.caster.adjacency)});
     }
   }
 
@@ -446,6 +481,22 @@ class FastRobustShadows final : public Lesson {
     if (key == sceneKey_) return;
     sceneKey_ = key;
     setScene(builtInScene(f.option("slices"), f.on("many"), f.on("moving")));
+  }
+
+  // Reversed float depth or GL's mapping, as the frame says; every depth comparison follows it.
+  void setDepthMapping(const Frame& f) {
+    if (f.reversedDepth) {
+      glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // window depth = clip z / w: no 0.5 + 0.5 z/w
+      glClearDepth(0.0);                             // the farthest depth is 0 (infinity)
+      less_ = GL_GREATER;                            // nearer is greater
+      lequal_ = GL_GEQUAL;
+      projection_ = reversedDepth(f.projection);  // clip z' = (w - z) / 2: near 1, infinity 0
+    } else {                                      // GL's default clip control, as the framework leaves it
+      glClearDepth(1.0);
+      less_ = GL_LESS;
+      lequal_ = GL_LEQUAL;
+      projection_ = f.projection;
+    }
   }
 
   // Every light once, the chosen one last.
@@ -482,7 +533,7 @@ class FastRobustShadows final : public Lesson {
 
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // only the stencil changes
     glDepthMask(GL_FALSE);                                // volumes are not surfaces
-    glDepthFunc(GL_LESS);                                 // in front of the scene: pass; behind: fail
+    glDepthFunc(less_);                                   // in front of the scene: pass; behind: fail
     glDisable(GL_CULL_FACE);                              // both faces in one draw, two-sided stencil
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_ALWAYS, 0, 0xFF);  // every volume fragment counts
@@ -501,39 +552,119 @@ class FastRobustShadows final : public Lesson {
         continue;
       }
       f.count("casters_case" + std::to_string(choices[c].shadowCase));
-      const glm::mat4 model = o.modelAt(f.time);
-      const glm::vec4 local = glm::inverse(model) * light.position;  // the light in the caster's space
-      const VolumeIndices built = casterVolume(o.caster, local, choices[c], f.on("light-cap"), f.on("split"));
-      const CasterVolume& v = built.volume;
-      caster.gpu->upload(built.indices, built.split);
-      if (v.zfail) f.count("casters_zfail");
-      f.count("side_triangles", v.sides / 3);
-      f.count("dark_cap_triangles", v.darkCap / 3 + v.splitVertices / 3);
-      f.count("light_cap_triangles", v.lightCap / 3);
-      f.count("split_fan_triangles", v.splitTriangles);
-      f.count("fan_spheres", static_cast<std::uint64_t>(v.spheres));
-
-      extrude_.set("viewProjection", f.projection * f.view);
-      extrude_.set("model", model);
-      extrude_.set("light", local);
-      if (!v.zfail) {  // z-pass: count the faces in front of the scene
-        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);  // the eye ray enters a volume
-        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);   // and leaves it
-        caster.gpu->draw(0, v.sides);
-      } else {  // z-fail: count the faces behind the scene, the volume closed at both ends
-        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);   // behind: the ray leaves a volume
-        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);  // behind: it enters one
-        caster.gpu->draw(0, v.sides + v.darkCap);  // the dark cap at infinity fails LESS by itself
-        caster.gpu->drawSplit();
-        glDepthFunc(GL_NEVER);  // the light cap lies on the caster's surface: never in front of it
-        caster.gpu->draw(v.sides + v.darkCap, v.lightCap);
-        glDepthFunc(GL_LESS);
-      }
-      if (checked) caster.volume = v;
-      lightVolumes_.push_back({c, v});
+      const glm::vec4 local = glm::inverse(o.modelAt(f.time)) * light.position;  // in the caster's space
+      buildVolume(f, c, local, choices[c], checked);
     }
+
+    // Count every volume; where their counts could add past 255 (an 8-bit count would wrap to 0,
+    // lit), in groups that cannot pass 127, each folded into bit 7 (geometry/shadow_volume.h).
+    std::vector<std::size_t> nesting;
+    for (const LightVolume& lv : lightVolumes_) nesting.push_back(lv.nesting);
+    const CountPlan plan = countPlan(nesting);
+    for (int g = 0; g < plan.groups; ++g) {
+      if (plan.fold) glStencilMask(0x7F);  // bit 7 keeps what the groups before found
+      for (std::size_t k = 0; k < lightVolumes_.size(); ++k)
+        if (plan.group[k] == g) countVolume(f, lightVolumes_[k], light.position);
+      if (plan.fold) foldCount();
+    }
+    glStencilMask(0xFF);
+    if (plan.fold) f.count("count_groups", static_cast<std::uint64_t>(plan.groups));
     glDisable(GL_STENCIL_TEST);
     glEnable(GL_CULL_FACE);  // the scene's own culling again
+  }
+
+  // One volume counted for the current light: a caster's whole volume, or one piece of it.
+  struct LightVolume {
+    std::size_t caster;
+    std::size_t first;  // into the caster's uploaded indices
+    CasterVolume volume;
+    std::size_t nesting;  // the most it can add to a pixel's count
+  };
+
+  // One caster's volume for this light, uploaded and listed in lightVolumes_: as the method
+  // chose it, or, where it could nest deeper than a count group's 127, in pieces of its light
+  // cap, each a full-caps z-fail volume (Everitt and Kilgard's caps close any piece).
+  void buildVolume(Frame& f, std::size_t c, const glm::vec4& local, const VolumeChoice& choice,
+                   bool checked) {
+    Caster& caster = casters_[c];
+    const PreparedCaster& prepared = scene_.objects[caster.object].caster;
+    VolumeIndices built = casterVolume(prepared, local, choice, f.on("light-cap"), f.on("split"));
+    const CasterVolume& v = built.volume;
+    const bool closed = prepared.report.closed();
+    const bool outside = local.w == 0.0f || glm::distance(glm::vec3(local) / local.w, caster.bounds.center) >
+                                                caster.bounds.radius;
+    std::size_t nesting = 1;
+    if (!caster.convex) {
+      std::size_t lit = 0;
+      for (bool l : facesLight(prepared.mesh, local)) lit += l;
+      // An open caster casts from both sides, and a fold of it changes the count by two.
+      nesting = closed ? nestingBound(lit, v.silhouette / 2, false, outside)
+                       : nestingBound(prepared.mesh.indices.size() / 3, v.silhouette, false, outside);
+    }
+    std::vector<LightVolume> volumes{{c, 0, v, nesting}};
+    if (nesting > 127 && closed) {
+      volumes.clear();
+      std::vector<std::uint32_t> indices;
+      const VolumeChoice full{choice.shadowCase, true, true};
+      for (const std::vector<bool>& piece : litFacePieces(facesLight(prepared.mesh, local), 127)) {
+        const VolumeIndices p = casterVolume(prepared, local, full, true, false, &piece);
+        std::size_t pieceLit = 0;
+        for (bool l : piece) pieceLit += l;
+        volumes.push_back({c, indices.size(), p.volume, pieceLit});
+        indices.insert(indices.end(), p.indices.begin(), p.indices.end());
+      }
+      built = {volumes.empty() ? CasterVolume{} : volumes.front().volume, indices, {}};
+      f.count("volume_pieces", volumes.size());
+    }
+    caster.gpu->upload(built.indices, built.split);
+    for (const LightVolume& lv : volumes) {
+      const CasterVolume& pv = lv.volume;
+      if (pv.zfail) f.count("casters_zfail");
+      f.count("side_triangles", pv.sides / 3);
+      f.count("dark_cap_triangles", pv.darkCap / 3 + pv.splitVertices / 3);
+      f.count("light_cap_triangles", pv.lightCap / 3);
+      f.count("split_fan_triangles", pv.splitTriangles);
+      f.count("fan_spheres", static_cast<std::uint64_t>(pv.spheres));
+      lightVolumes_.push_back(lv);
+    }
+    if (checked) caster.volume = volumes.front().volume;
+  }
+
+  // One volume counted: z-pass in front of the scene, or z-fail behind it.
+  void countVolume(const Frame& f, const LightVolume& lv, const glm::vec4& worldLight) {
+    const Caster& caster = casters_[lv.caster];
+    const glm::mat4 model = scene_.objects[caster.object].modelAt(f.time);
+    const CasterVolume& v = lv.volume;
+    extrude_.set("viewProjection", projection_ * f.view);
+    extrude_.set("model", model);
+    extrude_.set("light", glm::inverse(model) * worldLight);
+    if (!v.zfail) {  // z-pass: count the faces in front of the scene
+      glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);  // the eye ray enters a volume
+      glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);   // and leaves it
+      caster.gpu->draw(lv.first, v.sides);
+    } else {  // z-fail: count the faces behind the scene, the volume closed at both ends
+      glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);   // behind: the ray leaves a volume
+      glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);  // behind: it enters one
+      caster.gpu->draw(lv.first,
+                       v.sides + v.darkCap);  // the dark cap at infinity fails LESS (GREATER) by itself
+      if (lv.first == 0) caster.gpu->drawSplit();
+      glDepthFunc(GL_NEVER);  // the light cap lies on the caster's surface: never in front of it
+      caster.gpu->draw(lv.first + v.sides + v.darkCap, v.lightCap);
+      glDepthFunc(less_);
+    }
+  }
+
+  // Where a group's count (bits 0-6) is not 0, the pixel is in a shadow: set bit 7 and clear the
+  // count for the next group. A rectangle over the whole window, testing only the stencil.
+  void foldCount() {
+    glStencilMask(0xFF);
+    glStencilFunc(GL_NOTEQUAL, 0x80, 0x7F);     // (0x80 & 0x7F) = 0 != count: counted something
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);  // 0x80: shadowed, count 0
+    glDisable(GL_DEPTH_TEST);
+    flat_.set("transform", glm::mat4(1.0f));  // the rectangle is in clip space already
+    window_.draw();
+    glEnable(GL_DEPTH_TEST);
+    glStencilFunc(GL_ALWAYS, 0, 0xFF);
   }
 
   // The light's volumes once more, every fragment passing: nothing written, only counted by the
@@ -543,12 +674,13 @@ class FastRobustShadows final : public Lesson {
     glDepthMask(GL_FALSE);
     glDisable(GL_DEPTH_TEST);  // in front of the scene or behind, every fragment is fill
     glDisable(GL_CULL_FACE);
-    for (const auto& [c, v] : lightVolumes_) {
-      const SceneObject& o = scene_.objects[casters_[c].object];
+    for (const LightVolume& lv : lightVolumes_) {
+      const SceneObject& o = scene_.objects[casters_[lv.caster].object];
+      const CasterVolume& v = lv.volume;
       extrude_.set("model", o.modelAt(fillTime_));
       extrude_.set("light", glm::inverse(o.modelAt(fillTime_)) * fillLight_);
-      casters_[c].gpu->draw(0, v.sides + v.darkCap + v.lightCap);
-      casters_[c].gpu->drawSplit();
+      casters_[lv.caster].gpu->draw(lv.first, v.sides + v.darkCap + v.lightCap);
+      if (lv.first == 0) casters_[lv.caster].gpu->drawSplit();
     }
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);
@@ -557,7 +689,7 @@ class FastRobustShadows final : public Lesson {
   // ---- the scene -----------------------------------------------------------------------------
 
   void drawScene(const Frame& f, glm::vec4 light, glm::vec3 colour, float radius, glm::vec3 ambient) {
-    light_.set("viewProjection", f.projection * f.view);
+    light_.set("viewProjection", projection_ * f.view);
     light_.set("ambient", ambient);
     light_.set("light", light);
     light_.set("lightColour", colour);
@@ -602,13 +734,16 @@ class FastRobustShadows final : public Lesson {
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
+    glDepthFunc(lequal_);
     glDepthMask(GL_FALSE);  // the overlay changes no depth (and, stencil test off, no stencil)
     glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(-1.0f, -1.0f);  // the tint lies on the caster, drawn by another shader
+    // The tint lies on the caster, drawn by another shader: pulled towards the eye, which is
+    // towards smaller depths in GL's mapping and larger ones reversed.
+    const float towardsEye = f.reversedDepth ? 1.0f : -1.0f;
+    glPolygonOffset(towardsEye, towardsEye);
     for (const Caster& c : casters_) {
       const SceneObject& o = scene_.objects[c.object];
-      flat_.set("transform", f.projection * f.view * o.modelAt(f.time));
+      flat_.set("transform", projection_ * f.view * o.modelAt(f.time));
       flat_.set("colour", caseColour[c.volume.shadowCase]);
       drawn_[c.object]->draw();
     }
@@ -618,7 +753,7 @@ class FastRobustShadows final : public Lesson {
     for (const Caster& c : casters_) {
       if (c.volume.shadowCase == 0) continue;
       const glm::mat4 model = scene_.objects[c.object].modelAt(f.time);
-      extrude_.set("viewProjection", f.projection * f.view);
+      extrude_.set("viewProjection", projection_ * f.view);
       extrude_.set("model", model);
       extrude_.set("light", glm::inverse(model) * light.position);
       glm::vec4 colour = caseColour[c.volume.shadowCase];
@@ -629,14 +764,16 @@ class FastRobustShadows final : public Lesson {
       extrude_.set("colour", glm::vec4(1.0f, 1.0f, 0.6f, 1.0f));
       glDepthFunc(GL_ALWAYS);  // the silhouettes show through their casters
       c.gpu->draw(c.volume.sides + c.volume.darkCap + c.volume.lightCap, c.volume.silhouette, GL_LINES);
-      glDepthFunc(GL_LEQUAL);
+      glDepthFunc(lequal_);
     }
     glDisable(GL_BLEND);
-    glDepthFunc(GL_LESS);
+    glDepthFunc(less_);
     glDepthMask(GL_TRUE);
   }
 
   Program light_, extrude_, flat_;
+  GLenum less_ = GL_LESS, lequal_ = GL_LEQUAL;  // the depth tests of this frame's depth mapping
+  glm::mat4 projection_{1.0f};                  // what the frame draws with: f.projection, maybe reversed
   Scene scene_;
   bool fromFile_ = false;
   int sceneKey_ = -1;
@@ -647,8 +784,9 @@ class FastRobustShadows final : public Lesson {
   SolidsSeen solids_;                         // this frame's rooms
   std::vector<bool> cutByNearPlane_;          // per object, this frame: back faces drawn
   std::vector<Caster> casters_;
-  std::vector<std::pair<std::size_t, CasterVolume>> lightVolumes_;  // the current light's, by caster
-  double fillTime_ = 0.0;                                           // and what drawVolumeFill needs
+  std::vector<LightVolume> lightVolumes_;  // the current light's
+  GpuTriangles window_;                    // the whole window, for folding the count
+  double fillTime_ = 0.0;                  // and what drawVolumeFill needs
   glm::vec4 fillLight_{0.0f};
   std::unique_ptr<AccumulationTarget> target_;
   GLuint framework_ = 0;

@@ -1,14 +1,21 @@
 // The GL glue against a real context (OSMesa where built in, else EGL): the framebuffer's
-// verified stencil, the recorder's counts and snapshots, GL errors failing a pass, and the
-// depth precision a far plane at infinity costs.
+// verified stencil, the recorder's counts and snapshots, GL errors failing a pass, the depth
+// precision a far plane at infinity costs, and the depth error per distance of a 24-bit buffer
+// against a reversed float one.
 // Without any context the tests are skipped, not passed.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <functional>
 #include <glm/gtc/matrix_transform.hpp>
 #include <iostream>
 #include <limits>
+#include <string>
+#include <vector>
 
+#include "geometry/projection.h"
 #include "geometry/shapes.h"
 #include "gl/context.h"
 #include "gl/debug.h"
@@ -218,4 +225,107 @@ TEST_F(Gl, FarPlaneAtInfinityCostsNOverFOfTheDepthRange) {
             << "% of the depth range, " << std::llround(farDepth / quantum) << " of the "
             << std::llround(1.0 / quantum) << " 24-bit steps\n";
   checkGlErrors("in the test");
+}
+
+// The depth error per distance of four depth buffers with the far plane at infinity and a near
+// plane of 1e-4 (tests/scenes/hard/near-plane-1e-4.scene's). A plane facing the eye at distance
+// d is drawn, its stored depth read back (as a float) and turned back into a distance d' with
+// the exact inverse of the mapping (in double); the error is |d' - d| / d, the largest over 40
+// distances per decade. The mappings:
+//   fixed24      GL_DEPTH24_STENCIL8, Pinf, GL's mapping: depth 1 - n/d, steps of 2^-24, so
+//                d^2/n * 2^-24 units apart: the relative error grows as d/n * 2^-24;
+//   float32      GL_DEPTH32F_STENCIL8, the same mapping: 1 - n/d lies in [0.5, 1), where a
+//                float's steps are 2^-24 too; no better;
+//   float32 glDepthRange(1, 0)  reversed by the depth range alone (GL 3.3, no clip control):
+//                depth n/d, but computed as 0.5 - 0.5 z/w from z/w = 1 - 2n/d, a float near 1
+//                whose steps are 2^-24: no better;
+//   float32 reversed, clip control   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE) and
+//                reversedDepth(Pinf): depth = clip z / w = n/d with no remapping, a float's
+//                relative step 2^-24 at every distance.
+TEST_F(Gl, ReversedFloatDepthKeepsTheRelativeErrorAtEveryDistance) {
+  if (!context->features().clipControl) GTEST_SKIP() << "no ARB_clip_control: the reversed float path is off";
+  const double n = 1e-4;
+  const glm::mat4 pinf = glm::infinitePerspective(glm::radians(90.0f), 1.0f, static_cast<float>(n));
+  Program flat("common/flat.vert", "common/flat.frag");
+  GpuMesh quad(makeScreenQuad());
+  struct Mapping {
+    std::string name;
+    DepthFormat format;
+    bool clipControl, depthRangeReversed;
+    glm::mat4 projection;
+    std::function<double(double depth)> distance;  // the exact inverse of the mapping
+  };
+  const auto fromPinf = [n](double depth) { return n / (1.0 - depth); };
+  const auto fromReversed = [n](double depth) { return n / depth; };
+  const std::vector<Mapping> mappings = {
+      {"fixed24, GL's mapping (Pinf)", DepthFormat::Fixed24, false, false, pinf, fromPinf},
+      {"float32, GL's mapping", DepthFormat::Float32, false, false, pinf, fromPinf},
+      {"float32, glDepthRange(1, 0)", DepthFormat::Float32, false, true, pinf, fromReversed},
+      {"float32, reversed, clip control", DepthFormat::Float32, true, false, reversedDepth(pinf),
+       fromReversed},
+  };
+  const std::vector<double> decades = {1e-3, 1e-2, 1e-1, 1.0, 10.0, 100.0, 1000.0};
+  constexpr int kPerDecade = 40;
+  std::vector<std::vector<double>> worst(mappings.size(), std::vector<double>(decades.size(), 0.0));
+  for (std::size_t m = 0; m < mappings.size(); ++m) {
+    const Mapping& mapping = mappings[m];
+    Framebuffer fb(8, 8, 8, mapping.format);
+    fb.bind();
+    glClipControl(GL_LOWER_LEFT, mapping.clipControl ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
+    glDepthRange(mapping.depthRangeReversed ? 1.0 : 0.0, mapping.depthRangeReversed ? 0.0 : 1.0);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    for (std::size_t k = 0; k < decades.size(); ++k)
+      for (int i = 0; i < kPerDecade; ++i) {
+        const float d = static_cast<float>(decades[k] * std::pow(10.0, i / double(kPerDecade)));
+        glClear(GL_DEPTH_BUFFER_BIT);
+        // The screen quad spans [-1, 1]^2; at distance d with a 90 degree view that is d wide.
+        flat.set("transform",
+                 mapping.projection * glm::scale(glm::translate(glm::mat4(1), {0, 0, -d}), glm::vec3(d)));
+        flat.set("colour", glm::vec4(1));
+        quad.draw();
+        float depth = -1.0f;
+        glReadPixels(4, 4, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &depth);
+        const double back = mapping.distance(static_cast<double>(depth));
+        const double error =
+            std::isfinite(back) ? std::abs(back - d) / d : std::numeric_limits<double>::infinity();
+        worst[m][k] = std::max(worst[m][k], error);
+      }
+    glDepthRange(0.0, 1.0);
+    glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+  }
+  checkGlErrors("in the test");
+
+  // The table docs/15-robust-zfail.md shows: the largest relative error per decade of distance.
+  std::cout << "| n = 1e-4, largest |d' - d| / d |";
+  for (double d : decades) std::cout << " d in [" << d << ", " << 10 * d << ") |";
+  std::cout << "\n|---|";
+  for (std::size_t k = 0; k < decades.size(); ++k) std::cout << "---|";
+  std::cout << "\n";
+  for (std::size_t m = 0; m < mappings.size(); ++m) {
+    std::cout << "| " << mappings[m].name << " |";
+    for (double e : worst[m]) {
+      char cell[32];
+      std::snprintf(cell, sizeof cell, " %.1e |", e);
+      std::cout << (std::isinf(e) ? std::string(" depth 1: infinity |") : std::string(cell));
+    }
+    std::cout << "\n";
+  }
+
+  const double step = std::ldexp(1.0, -24);
+  for (std::size_t k = 0; k < decades.size(); ++k) {
+    const double top = 10.0 * decades[k];
+    // Reversed float with clip control: a few float steps of d, whatever d is.
+    EXPECT_LT(worst[3][k], 8.0 * step) << "reversed float, decade " << decades[k];
+    // The other three: up to half a 2^-24 step of 1 - n/d, d/n * 2^-25 of d (and a float ulp or
+    // two of vertex arithmetic), so at least 1000 times worse than the reversed float by d = 1.
+    for (std::size_t m = 0; m < 3; ++m) {
+      if (std::isinf(worst[m][k])) continue;  // beyond d = n 2^24 everything reads as infinity
+      EXPECT_LT(worst[m][k], 2.0 * top / n * step + 8.0 * step)
+          << mappings[m].name << ", decade " << decades[k];
+      if (decades[k] >= 1.0) {
+        EXPECT_GT(worst[m][k], 1000.0 * worst[3][k]) << mappings[m].name << ", " << decades[k];
+      }
+    }
+  }
 }
