@@ -24,8 +24,10 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
+#include <iostream>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "geometry/halo.h"
@@ -50,23 +52,26 @@ LessonInfo lessonInfo() {
       "absent, INVERT so each pixel blends once; one bit beside a reflection's and a shadow's on one floor.";
   info.options = {
       {"method", 'M',
-       "how the object grows: 0 the whole object scaled about its centre (the paper), 1 each convex\n"
-       "      piece grown about its own centre (the paper's fix), 2 pushed along its normals,\n"
-       "      3 its outline moved k pixels every way (screen space)",
+       "how the object grows: 0 the whole object scaled about its\n"
+       "      centre (the paper), 1 each convex piece grown about its own\n"
+       "      centre (the paper's fix), 2 pushed along its normals, 3 its\n"
+       "      outline moved k pixels every way (screen space: a draw per\n"
+       "      offset, the cost grows with the square of the height)",
        kPieces, 3},
       {"stencil", 'T', "tag the object and draw the halo only where the tag is absent", 1},
       {"invert", 'I', "INVERT the halo's bit as each pixel blends, so no pixel blends twice", 1},
-      {"depth", 'Z', "the halo at the object's own depth (0: the grown shell's, nearer than the object)", 1},
+      {"depth", 'Z', "the halo at the object's own depth (0: at the grown shell's, nearer)", 1},
       {"floor", 'F', "over the visible floor (the reflection's bit) the halo skips the depth test", 1},
       {"occluder", 'O', "a rail just in front of the figure", 0},
-      {"ball", 'B', "a second haloed object, a ball overlapping the figure, with a bit of its own", 0},
+      {"ball", 'B', "a second haloed object, its own bit: a ball in front of the figure's arm", 0},
       {"shared-bit", 'H', "the ball's halo in the figure's bit (one bit for two halos)", 0},
       {"reflect", 'E', "the floor's reflection", 1},
       {"shadow", 'D', "the planar shadow on the floor", 1},
       {"halo", 'G', "draw the halo at all (off: the tests' reference)", 1},
       {"show", 'X',
-       "0 the shaded frame; 1 the blend counts: the same passes in flat colours, the figure blue, each\n"
-       "      blend of the figure's halo adding 96 to red and of the ball's to green (--stats measures them)",
+       "0 the shaded frame; 1 the blend counts: the same passes in flat\n"
+       "      colours, the figure blue, each blend of the figure's halo adding\n"
+       "      127 to red (twice 254), the ball's to green (--stats: measures)",
        0},
   };
   info.variants = {
@@ -90,7 +95,7 @@ LessonInfo lessonInfo() {
        "the shell below the floor fails the depth test: the ring is cut at the feet",
        {{"floor", 0}}},
       {"two-halos",
-       "a ball beside the figure, one bit each: both halos blend once, also over each other",
+       "a ball in front of the figure, one bit each: both halos blend once, also over each other",
        {{"ball", 1}}},
       {"two-halos-one-bit",
        "both halos in one bit: the first halo's INVERT and tag cut the second",
@@ -132,7 +137,8 @@ constexpr float kGrow = 0.075f;        // the other object-space methods: this m
 constexpr float kScreenPixels = 5.0f;  // screen space: the outline moved this far at 240 pixels high
 
 // What each pixel means in the blend-count picture (show = 1).
-constexpr float kCountStep = 96.0f / 255.0f;  // one blend
+// One blend adds 127 (dark red), two add 254 (bright red), three or more saturate at 255.
+constexpr float kCountStep = 127.0f / 255.0f;
 constexpr glm::vec4 kFigureId{0.0f, 0.0f, 1.0f, 1.0f}, kBallId{0.0f, 0.0f, 170.0f / 255.0f, 1.0f},
     kRailId{0.0f, 0.0f, 85.0f / 255.0f, 1.0f}, kBlack{0.0f, 0.0f, 0.0f, 1.0f};
 
@@ -197,8 +203,10 @@ struct HaloObject {
 
 class Halo final : public Lesson {
  public:
-  Halo()
-      : lit_("common/light.vert", "common/light.frag"),
+  // noteCost: say so on stderr when a frame of the screen-space method would take thousands of draws.
+  explicit Halo(bool noteCost)
+      : noteCost_(noteCost),
+        lit_("common/light.vert", "common/light.frag"),
         litFlat_("common/light.vert", "common/flat.frag"),
         clipped_("common/light_clipped.vert", "common/light.frag"),
         clippedFlat_("common/light_clipped.vert", "common/flat.frag"),
@@ -305,8 +313,10 @@ class Halo final : public Lesson {
     f.pass("tag");
 
     // ---- 3 halo: the grown object where its bit is 1, blended, the bit inverted as it blends -------------
-    if (f.on("halo"))
+    if (f.on("halo")) {
+      noteScreenCost(f, haloed);
       for (int o = 0; o < haloed; ++o) drawHalo(f, o, counting);
+    }
     glDepthMask(GL_TRUE);  // GL's defaults again, for the next frame and the window's overlay
     glDisable(GL_BLEND);
     glStencilMask(0xFF);
@@ -395,6 +405,25 @@ class Halo final : public Lesson {
       }
   }
 
+  // The screen method draws every piece once per offset in a disc of k pixels, k in proportion to the
+  // height: its draws grow with the square of the height (1134 at 320x240, 4438 at 640x480). Above
+  // kScreenDrawsNoted draws a frame, a headless run says once why it is slow; it is not an error.
+  static constexpr long kScreenDrawsNoted = 10000;
+  void noteScreenCost(const Frame& f, int haloed) {
+    if (!noteCost_ || f.option("method") != kScreen) return;
+    const int k = screenRadius(f);
+    long offsets = 0;
+    for (int dy = -k; dy <= k; ++dy)
+      for (int dx = -k; dx <= k; ++dx) offsets += dx * dx + dy * dy <= k * k ? 1 : 0;
+    long pieces = 0;
+    for (int o = 0; o < haloed; ++o) pieces += static_cast<long>(object(o).pieces.size());
+    const long draws = offsets * pieces * (f.on("floor") && f.on("stencil") ? 2 : 1);
+    if (draws <= kScreenDrawsNoted) return;
+    noteCost_ = false;  // once per run
+    std::cerr << "note: method 3 (screen) draws " << draws << " shells a frame here (k = " << k << " pixels, "
+              << offsets << " offsets): the cost grows with the square of the height\n";
+  }
+
   static int screenRadius(const Frame& f) {
     return std::max(1, static_cast<int>(std::lround(kScreenPixels * static_cast<float>(f.size.y) / 240.0f)));
   }
@@ -473,8 +502,10 @@ class Halo final : public Lesson {
   static std::uint8_t idByte(const glm::vec4& id) {
     return static_cast<std::uint8_t>(std::lround(id.b * 255.0f));
   }
-  // 96 per blend, saturating at 255: 0, 1, 2, and 3 for three or more.
-  static std::uint8_t blendCount(std::uint8_t v) { return static_cast<std::uint8_t>((v + 48) / 96); }
+  // 127 per blend, saturating at 255: 0, 1, 2 (254), and 3 for three or more (255).
+  static std::uint8_t blendCount(std::uint8_t v) {
+    return v == 255 ? 3 : static_cast<std::uint8_t>((v + 63) / 127);
+  }
 
   // ---- the scene -------------------------------------------------------------------------------------
 
@@ -487,11 +518,12 @@ class Halo final : public Lesson {
   }
   static glm::mat4 modelOf(const Frame& f, int o) {
     if (o == 0) return figureModel(f);
-    // The ball floats beside the figure's raised right arm, a little nearer the eye.
+    // The ball floats in front of the figure's raised right arm, nearer the eye: it hides part of the arm.
     const float bob = 0.08f * std::sin(1.3f * static_cast<float>(f.time));
     return figureModel(f) * glm::translate(glm::mat4(1), {0.62f, 1.45f + bob, 0.45f});
   }
-  // The rail: a thin bar across the figure's chest, 3 cm in front of the body (nearer than the grown shell).
+  // The rail: a bar across the figure's chest, 3 cm thick, its back face on the body and its front face
+  // 3 cm in front of it (nearer than the grown shell's 7.5 cm).
   static glm::mat4 railModel(const Frame& f) {
     return figureModel(f) * glm::translate(glm::mat4(1), {0.0f, 1.0f, 0.355f}) *
            glm::scale(glm::mat4(1), {0.95f, 0.06f, 0.015f});
@@ -552,6 +584,7 @@ class Halo final : public Lesson {
     mesh.draw();
   }
 
+  bool noteCost_;
   Program lit_, litFlat_, clipped_, clippedFlat_, shadow_, flat_, shell_;
   Mesh floorMesh_, railMesh_;
   GpuMesh floor_, rail_;
@@ -561,6 +594,10 @@ class Halo final : public Lesson {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const auto given = [&](std::string_view flag) {
+    return std::find(argv + 1, argv + argc, flag) != argv + argc;
+  };
+  const bool noteCost = given("--headless") && !given("--quiet");
   return runLesson(
-      lessonInfo(), [] { return std::make_unique<Halo>(); }, argc, argv);
+      lessonInfo(), [noteCost] { return std::make_unique<Halo>(noteCost); }, argc, argv);
 }

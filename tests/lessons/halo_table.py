@@ -20,7 +20,7 @@ RUNS, FRAMES = 5, 20
 
 
 def stats(exe, args):
-    out = subprocess.run([str(exe), "--headless", "--quiet", "--time", "1", "--stats", "--out", "/dev/null.png"]
+    out = subprocess.run([str(exe), "--headless", "--quiet", "--time", "1", "--stats"]
                          + args, capture_output=True, text=True)
     if out.returncode != 0:
         sys.exit(f"{exe} {' '.join(args)}: exit {out.returncode}: {out.stderr.strip()}")

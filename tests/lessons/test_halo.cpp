@@ -1,6 +1,6 @@
 // Lesson 11's claims, measured on its output. The blend-count picture (--set show=1) is the same
 // passes with the same stencil and depth state, every surface a flat id colour and each halo blend
-// adding 96 to red (the figure's halo) or green (the ball's): so its stencil equals the shaded
+// adding 127 to red (the figure's halo) or green (the ball's): so its stencil equals the shaded
 // frame's, and its red sum equals the fragments the halo pass let through (samples_passed). On it:
 // no halo pixel over the object with the stencil, every halo pixel blended once with INVERT (and
 // some twice without), the ring's width along the outline per method, the rail and the floor, two
@@ -30,8 +30,10 @@ long long passField(const std::string& stats, const std::string& pass, const std
 
 // The count picture decoded: blends per pixel of each halo, and which object shows.
 constexpr std::uint8_t kFigure = 255, kBall = 170, kRail = 85;
+// 127 a blend: 127 once, 254 twice, 255 (saturated) three times or more.
 int blends(const LessonRun& r, std::size_t i, int halo) {
-  return (r.colour.pixels[4 * i + halo] + 48) / 96;
+  const int v = r.colour.pixels[4 * i + halo];
+  return v == 255 ? 3 : (v + 63) / 127;
 }
 std::uint8_t id(const LessonRun& r, std::size_t i) {
   return r.colour.pixels[4 * i + 2];
