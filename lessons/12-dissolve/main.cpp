@@ -24,8 +24,8 @@
 // (in the window the right mouse button sprays).
 //
 // The pattern lives in the lesson's framebuffer, which keeps its stencil from frame to frame; a
-// window's own stencil could not hold it (after a buffer swap its content is undefined, EGL 1.5
-// section 3.10.1.1 and GL 4.6 section 9.2... the default framebuffer's ancillary buffers).
+// window's own stencil could not be trusted to hold it (EGL 1.5, section 3.10.1: the contents of
+// ancillary buffers are always undefined after eglSwapBuffers).
 //
 // For comparison (the `method` option), what engines do instead: draw both scenes whole into
 // textures and pick per pixel in a full-screen pass, or shade every fragment of both and discard
