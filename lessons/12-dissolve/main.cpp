@@ -34,6 +34,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <memory>
@@ -232,7 +233,10 @@ class Dissolve final : public Lesson {
       glClearStencil(0);
       values_.assign(static_cast<std::size_t>(f.size.x) * static_cast<std::size_t>(f.size.y), 255);
     } else {
+      const auto start = std::chrono::steady_clock::now();
       values_ = makePattern(static_cast<PatternKind>(pattern), f.size.x, f.size.y);
+      patternMicroseconds_ = static_cast<std::uint64_t>(
+          std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
       // Clear to 0, then set each bit plane where the pattern has that bit.
       glStencilMask(0xFF);
       glClearStencil(0);
@@ -438,6 +442,19 @@ class Dissolve final : public Lesson {
     const int k = dissolveState(f), method = f.option("method");
     const std::uint64_t n = static_cast<std::uint64_t>(f.size.x) * static_cast<std::uint64_t>(f.size.y);
     f.count("pixels", n);
+    // The pattern's own measures, on the CPU: its clumpiness (the variance of the share below k
+    // over every 8x8 window, in billionths) at a few states and averaged over 1..255, and the time
+    // it took to make (blue noise: the void-and-cluster tile included; a time, not a count).
+    f.count("pattern_us", patternMicroseconds_);
+    double varianceSum = 0;
+    for (int s = 1; s < 256; ++s) {
+      const double v = coverageVariance(values_, f.size.x, f.size.y, s, 8);
+      varianceSum += v;
+      if (s % 32 == 0)
+        f.count("coverage_variance_e9.k" + std::to_string(s),
+                static_cast<std::uint64_t>(std::lround(v * 1e9)));
+    }
+    f.count("coverage_variance_e9.mean", static_cast<std::uint64_t>(std::lround(varianceSum / 255 * 1e9)));
     // Fragments shaded per scene (pipeline statistics) and the pixels each scene's sky covers
     // (occlusion queries: the sky is one quad over the whole frame, drawn without the depth test).
     const bool statistics = hasFeature(f.features, Feature::PipelineStatistics);
@@ -543,6 +560,7 @@ class Dissolve final : public Lesson {
   int writtenPattern_ = -1;
   glm::ivec2 writtenSize_{0};
   std::uint32_t paintedDabs_ = 0;
+  std::uint64_t patternMicroseconds_ = 0;
 };
 
 }  // namespace

@@ -1,0 +1,157 @@
+#!/usr/bin/env python3
+"""Lesson 12's strips and tables: the dissolve at several states per pattern, and what it costs.
+
+Renders lesson 12 headless and writes docs/figures/12-dissolve/strip-<pattern>.png: the frame at
+states k = 0, 32, 64, 128, 192, 224, 256 side by side (the painted mask: k = 128 at times 0.25 s to
+4 s, the brush's stroke growing). Then prints Markdown tables from the lesson's --stats
+(--set measure=1): each pattern's clumpiness (8x8 coverage variance) and making time; fragments
+per method; and frame times per method and pattern, the minimum and mean over RUNS runs of FRAMES
+frames (the first frame, which writes the pattern, left out).
+
+    tests/lessons/dissolve_figures.py BUILD_DIR [--no-strips] [--no-timing]
+
+Reads and writes PNG with the standard library only (8-bit RGBA, as the lessons write them).
+"""
+import json
+import pathlib
+import struct
+import subprocess
+import sys
+import tempfile
+import zlib
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+PATTERNS = ["white noise", "Bayer", "blue noise", "linear wipe", "radial wipe", "clock wipe", "painted"]
+SLUGS = ["white-noise", "bayer", "blue-noise", "linear-wipe", "radial-wipe", "clock-wipe", "painted"]
+METHODS = ["stencil", "draw both, mix", "shade both, discard"]
+STATES = [0, 32, 64, 128, 192, 224, 256]
+PAINT_TIMES = [0.25, 0.5, 1, 1.5, 2, 3, 4]
+RUNS, FRAMES = 3, 30
+
+
+def read_png(path):
+    data = path.read_bytes()
+    pos, idat = 8, b""
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        if kind == b"IHDR":
+            width, height, depth, colour = struct.unpack(">IIBB", data[pos + 8:pos + 18])
+            assert depth == 8 and colour == 6, f"{path}: not 8-bit RGBA"
+        elif kind == b"IDAT":
+            idat += data[pos + 8:pos + 8 + length]
+        pos += 12 + length
+    raw, stride, rows, prev = zlib.decompress(idat), 4 * width, [], bytearray(4 * width)
+    for y in range(height):
+        kind, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - 4] if i >= 4 else 0
+            b, c = prev[i], prev[i - 4] if i >= 4 else 0
+            if kind == 1:
+                line[i] = (line[i] + a) & 255
+            elif kind == 2:
+                line[i] = (line[i] + b) & 255
+            elif kind == 3:
+                line[i] = (line[i] + (a + b) // 2) & 255
+            elif kind == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(line)
+        prev = line
+    return width, height, rows
+
+
+def write_png(path, width, height, rows):
+    def chunk(kind, body):
+        return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body))
+    raw = b"".join(b"\0" + bytes(r) for r in rows)
+    path.write_bytes(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0))
+                     + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+
+
+def run(exe, args):
+    out = subprocess.run([str(exe), "--headless", "--quiet"] + args, capture_output=True, text=True)
+    if out.returncode != 0:
+        sys.exit(f"{exe} {' '.join(args)}: exit {out.returncode}: {out.stderr.strip()}")
+    return out.stdout
+
+
+def stats(exe, args):
+    with tempfile.TemporaryDirectory() as tmp:
+        return json.loads(run(exe, args + ["--stats", "--out", f"{tmp}/x.png"]))
+
+
+def strips(exe):
+    out = ROOT / "docs/figures/12-dissolve"
+    out.mkdir(parents=True, exist_ok=True)
+    with tempfile.TemporaryDirectory() as tmp:
+        for p, slug in enumerate(SLUGS):
+            frames = []
+            for i, k in enumerate(STATES):
+                time = PAINT_TIMES[i] if slug == "painted" else 1
+                step = 128 if slug == "painted" else k
+                png = pathlib.Path(tmp) / f"{slug}-{i}.png"
+                run(exe, ["--size", "160x120", "--time", str(time), "--variant", "dissolve", "--set", f"pattern={p}",
+                          "--set", f"step={step}", "--out", str(png)])
+                frames.append(read_png(png))
+            gap = 4
+            width = sum(f[0] for f in frames) + gap * (len(frames) - 1)
+            rows = []
+            for y in range(frames[0][1]):
+                row = bytearray()
+                for j, f in enumerate(frames):
+                    if j:
+                        row += bytes([255, 255, 255, 255]) * gap
+                    row += f[2][y]
+                rows.append(row)
+            write_png(out / f"strip-{slug}.png", width, frames[0][1], rows)
+            print(f"wrote docs/figures/12-dissolve/strip-{slug}.png", file=sys.stderr)
+
+
+def tables(exe, timing):
+    print("| pattern | making it, 320x240 (ms) | variance k=32 | k=64 | k=128 | k=192 | mean over k=1..255 |")
+    print("|---|---|---|---|---|---|---|")
+    for p in range(6):
+        c = stats(exe, ["--size", "320x240", "--variant", "dissolve", "--set", f"pattern={p}", "--set", "step=128",
+                        "--set", "measure=1"])["counts"]
+        v = [c[f"coverage_variance_e9.k{k}"] * 1e-9 for k in (32, 64, 128, 192)]
+        print(f"| {PATTERNS[p]} | {c['pattern_us'] / 1000:.0f} | " + " | ".join(f"{x:.2e}" for x in v)
+              + f" | {c['coverage_variance_e9.mean'] * 1e-9:.2e} |")
+    print()
+    print("| pattern | method | pixels | samples passed | fragments shaded (pipeline statistics) |")
+    print("|---|---|---|---|---|")
+    for p in (2, 3):
+        for m in range(3):
+            c = stats(exe, ["--size", "320x240", "--variant", "dissolve", "--set", f"pattern={p}", "--set", "step=128",
+                            "--set", f"method={m}", "--set", "measure=1"])["counts"]
+            print(f"| {PATTERNS[p]} | {METHODS[m]} | {c['pixels']} | {c['samples_passed']} | "
+                  f"{c.get('fragments_shaded', 'n/a')} |")
+    print(f"| (either) | scene A whole, scene B whole | | | {c.get('whole_a_fragments_shaded', 'n/a')}, "
+          f"{c.get('whole_b_fragments_shaded', 'n/a')} |")
+    if not timing:
+        return
+    print()
+    print(f"| size | pattern | method | frame ms, min | frame ms, mean of {RUNS} runs' means |")
+    print("|---|---|---|---|---|")
+    for size in ("640x480", "1280x960"):
+        for p in (2, 3):
+            for m in range(3):
+                mins, means = [], []
+                for _ in range(RUNS):
+                    s = stats(exe, ["--size", size, "--variant", "dissolve", "--set", f"pattern={p}", "--set",
+                                    "step=128", "--set", f"method={m}", "--frames", str(FRAMES)])["frame_ms"]
+                    mins.append(s["min"]), means.append(s["mean"])
+                print(f"| {size} | {PATTERNS[p]} | {METHODS[m]} | {min(mins):.1f} | {sum(means) / RUNS:.1f} |")
+
+
+def main():
+    if len(sys.argv) < 2:
+        sys.exit(__doc__)
+    exe = pathlib.Path(sys.argv[1]) / "lessons/12-dissolve"
+    if "--no-strips" not in sys.argv:
+        strips(exe)
+    tables(exe, "--no-timing" not in sys.argv)
+
+
+if __name__ == "__main__":
+    main()
