@@ -78,6 +78,8 @@ LessonInfo lessonInfo() {
       {"exact-ends", 'E', "state 0 by ALWAYS/NEVER (off: the reference -1, clamped to 0, shows B at t = 0)",
        1},
       {"which", 'W', "which scene each pixel shows, flat: A red, B blue", 0},
+      {"brush", 'B',
+       "in the window, the right mouse button sprays B through A (0 into the stencil), on any pattern", 1},
       {"measure", 'Q',
        "count per frame: pixels of each scene by occlusion queries, fragments shaded (pipeline\n"
        "      statistics where present), and the state swept 0..256 (the share of B, switch-backs)",
@@ -207,8 +209,8 @@ class Dissolve final : public Lesson {
     }
     f.pass("pattern");
 
-    // 2. The brush (the painted mask): spray 0 into the stencil, colour untouched.
-    if (pattern == kPainted) paint(f);
+    // 2. The brush (the painted mask's stroke, and the window's pointer): 0 into the stencil.
+    if (pattern == kPainted || (f.pointer && f.on("brush"))) paint(f, pattern == kPainted);
     f.pass("paint");
 
     if (f.on("measure")) measure(f);  // before the frame, which it would overwrite
@@ -273,7 +275,7 @@ class Dissolve final : public Lesson {
   // The brush: dabs of dots along a stroke (the time so far along a fixed curve, a dab every
   // 1/60 s) and, in the window, under the pointer while the right button is held. Each dot sets
   // its pixel to 0, so B shows there from state 1 on.
-  void paint(Frame& f) {
+  void paint(Frame& f, bool stroke) {
     std::vector<glm::vec4> dots;
     const auto dab = [&](glm::vec2 centre, std::uint32_t id) {  // centre in pixels
       const float radius = 0.06f * static_cast<float>(f.size.y);
@@ -286,13 +288,14 @@ class Dissolve final : public Lesson {
                         2.0f * p.y / static_cast<float>(f.size.y) - 1.0f, 0.0f, 1.0f});
       }
     };
-    const int dabs = std::clamp(static_cast<int>(f.time * 60.0), 0, 60 * 30);
+    const int dabs = stroke ? std::clamp(static_cast<int>(f.time * 60.0), 0, 60 * 30) : 0;
     for (int d = 0; d < dabs; ++d) {
       const float s = static_cast<float>(d) / 60.0f;  // a figure of eight across the frame
       const glm::vec2 c(0.5f + 0.35f * std::sin(1.3f * s), 0.5f + 0.3f * std::sin(2.6f * s));
       dab(c * glm::vec2(f.size), static_cast<std::uint32_t>(d));
     }
-    if (f.pointer) dab(*f.pointer, 100000u + paintedDabs_++);  // the window's brush adds to the stencil
+    if (f.pointer && f.on("brush"))
+      dab(*f.pointer, 100000u + paintedDabs_++);  // the window's brush adds to the stencil
     if (dots.empty()) return;
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_STENCIL_TEST);
