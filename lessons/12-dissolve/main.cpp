@@ -80,6 +80,10 @@ LessonInfo lessonInfo() {
       {"which", 'W', "which scene each pixel shows, flat: A red, B blue", 0},
       {"brush", 'B',
        "in the window, the right mouse button sprays B through A (0 into the stencil), on any pattern", 1},
+      {"work", 'H',
+       "extra arithmetic per fragment of the scenes (iterations), a stand-in for costly shading: what\n"
+       "      shading fewer fragments saves shows in the time",
+       0, 4096},
       {"measure", 'Q',
        "count per frame: pixels of each scene by occlusion queries, fragments shaded (pipeline\n"
        "      statistics where present), and the state swept 0..256 (the share of B, switch-backs)",
@@ -170,7 +174,7 @@ class SceneTarget {
 class Dissolve final : public Lesson {
  public:
   Dissolve()
-      : lit_("common/lit.vert", "common/lit.frag"),
+      : lit_("common/lit.vert", "12-dissolve/lit_work.frag"),
         litDiscard_("common/lit.vert", "12-dissolve/lit_discard.frag"),
         patternBit_("common/flat.vert", "12-dissolve/pattern_bit.frag"),
         mix_("common/flat.vert", "12-dissolve/mix.frag"),
@@ -412,6 +416,7 @@ class Dissolve final : public Lesson {
       program->set("toLight",
                    glm::normalize(sceneB ? glm::vec3(-0.5f, 0.6f, 0.3f) : glm::vec3(0.4f, 0.8f, 0.5f)));
       program->set("ambient", which ? 1.0f : ambient);
+      program->set("work", f.option("work"));
       mesh.draw();
     };
     glDisable(GL_DEPTH_TEST);  // the sky lies behind everything

@@ -5,8 +5,9 @@ Renders lesson 12 headless and writes docs/figures/12-dissolve/strip-<pattern>.p
 states k = 0, 32, 64, 128, 192, 224, 256 side by side (the painted mask: k = 128 at times 0.25 s to
 4 s, the brush's stroke growing). Then prints Markdown tables from the lesson's --stats
 (--set measure=1): each pattern's clumpiness (8x8 coverage variance) and making time; fragments
-per method; and frame times per method and pattern, the minimum and mean over RUNS runs of FRAMES
-frames (the first frame, which writes the pattern, left out).
+per method; and frame times per method, pattern and state with WORK iterations of extra work per
+fragment, the minimum and mean over RUNS runs of FRAMES frames (the first frame, which writes the
+pattern, left out).
 
     tests/lessons/dissolve_figures.py BUILD_DIR [--no-strips] [--no-timing]
 
@@ -26,7 +27,11 @@ SLUGS = ["white-noise", "bayer", "blue-noise", "linear-wipe", "radial-wipe", "cl
 METHODS = ["stencil", "draw both, mix", "shade both, discard"]
 STATES = [0, 32, 64, 128, 192, 224, 256]
 PAINT_TIMES = [0.25, 0.5, 1, 1.5, 2, 3, 4]
-RUNS, FRAMES = 3, 30
+RUNS, FRAMES, WORK = 5, 10, 64
+# (method, pattern, state): each scene alone, then half way through blue noise, a wipe and Bayer
+# with the stencil, and blue noise and the wipe by the engines' two ways.
+TIMED = [(0, 2, 0), (0, 2, 256), (0, 2, 128), (0, 3, 128), (0, 1, 128), (1, 2, 128), (1, 3, 128), (2, 2, 128),
+         (2, 3, 128)]
 
 
 def read_png(path):
@@ -131,17 +136,19 @@ def tables(exe, timing):
     if not timing:
         return
     print()
-    print(f"| size | pattern | method | frame ms, min | frame ms, mean of {RUNS} runs' means |")
-    print("|---|---|---|---|---|")
-    for size in ("640x480", "1280x960"):
-        for p in (2, 3):
-            for m in range(3):
-                mins, means = [], []
-                for _ in range(RUNS):
-                    s = stats(exe, ["--size", size, "--variant", "dissolve", "--set", f"pattern={p}", "--set",
-                                    "step=128", "--set", f"method={m}", "--frames", str(FRAMES)])["frame_ms"]
-                    mins.append(s["min"]), means.append(s["mean"])
-                print(f"| {size} | {PATTERNS[p]} | {METHODS[m]} | {min(mins):.1f} | {sum(means) / RUNS:.1f} |")
+    print(f"Frame time with {WORK} iterations of extra work per fragment (the `work` option), ms: the minimum and "
+          f"the mean of {RUNS} runs' means of {FRAMES} frames")
+    print()
+    print("| size | method | pattern | state k | frame ms, min | mean |")
+    print("|---|---|---|---|---|---|")
+    for size in ("320x240",):
+        for m, p, k in TIMED:
+            mins, means = [], []
+            for _ in range(RUNS):
+                s = stats(exe, ["--size", size, "--variant", "dissolve", "--set", f"pattern={p}", "--set", f"step={k}",
+                                "--set", f"method={m}", "--set", f"work={WORK}", "--frames", str(FRAMES)])["frame_ms"]
+                mins.append(s["min"]), means.append(s["mean"])
+            print(f"| {size} | {METHODS[m]} | {PATTERNS[p]} | {k} | {min(mins):.1f} | {sum(means) / RUNS:.1f} |")
 
 
 def main():
