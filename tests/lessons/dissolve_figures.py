@@ -5,9 +5,10 @@ Renders lesson 12 headless and writes docs/figures/12-dissolve/strip-<pattern>.p
 states k = 0, 32, 64, 128, 192, 224, 256 side by side (the painted mask: k = 128 at times 0.25 s to
 4 s, the brush's stroke growing). Then prints Markdown tables from the lesson's --stats
 (--set measure=1): each pattern's clumpiness (8x8 coverage variance) and making time; fragments
-per method; and frame times per method, pattern and state with WORK iterations of extra work per
-fragment, the minimum and mean over RUNS runs of FRAMES frames (the first frame, which writes the
-pattern, left out).
+per method; and the CPU time per frame (llvmpipe draws on the CPU; CPU time, unlike wall time,
+hardly changes when other work shares the machine) per method, pattern and state, with and
+without WORK iterations of extra work per fragment: FRAMES + 1 frames less one frame (which writes
+the pattern), over FRAMES.
 
     tests/lessons/dissolve_figures.py BUILD_DIR [--no-strips] [--no-timing]
 
@@ -15,6 +16,7 @@ Reads and writes PNG with the standard library only (8-bit RGBA, as the lessons 
 """
 import json
 import pathlib
+import resource
 import struct
 import subprocess
 import sys
@@ -27,7 +29,7 @@ SLUGS = ["white-noise", "bayer", "blue-noise", "linear-wipe", "radial-wipe", "cl
 METHODS = ["stencil", "draw both, mix", "shade both, discard"]
 STATES = [0, 32, 64, 128, 192, 224, 256]
 PAINT_TIMES = [0.25, 0.5, 1, 1.5, 2, 3, 4]
-RUNS, FRAMES, WORK = 5, 10, 64
+FRAMES, WORK, SIZE = 40, 64, "320x240"
 # (method, pattern, state): each scene alone, then half way through blue noise, a wipe and Bayer
 # with the stencil, and blue noise and the wipe by the engines' two ways.
 TIMED = [(0, 2, 0), (0, 2, 256), (0, 2, 128), (0, 3, 128), (0, 1, 128), (1, 2, 128), (1, 3, 128), (2, 2, 128),
@@ -136,19 +138,29 @@ def tables(exe, timing):
     if not timing:
         return
     print()
-    print(f"Frame time with {WORK} iterations of extra work per fragment (the `work` option), ms: the minimum and "
-          f"the mean of {RUNS} runs' means of {FRAMES} frames")
+    print(f"CPU time per frame (llvmpipe renders on the CPU: user + system time of the lesson's process, "
+          f"{FRAMES + 1} frames less 1 frame, over {FRAMES}), ms, without and with {WORK} iterations of extra "
+          f"work per fragment (the `work` option), {SIZE}:")
     print()
-    print("| size | method | pattern | state k | frame ms, min | mean |")
-    print("|---|---|---|---|---|---|")
-    for size in ("320x240",):
-        for m, p, k in TIMED:
-            mins, means = [], []
-            for _ in range(RUNS):
-                s = stats(exe, ["--size", size, "--variant", "dissolve", "--set", f"pattern={p}", "--set", f"step={k}",
-                                "--set", f"method={m}", "--set", f"work={WORK}", "--frames", str(FRAMES)])["frame_ms"]
-                mins.append(s["min"]), means.append(s["mean"])
-            print(f"| {size} | {METHODS[m]} | {PATTERNS[p]} | {k} | {min(mins):.1f} | {sum(means) / RUNS:.1f} |")
+    print(f"| method | pattern | state k | work 0 | work {WORK} |")
+    print("|---|---|---|---|---|")
+    for m, p, k in TIMED:
+        cells = []
+        for work in (0, WORK):
+            args = ["--size", SIZE, "--variant", "dissolve", "--set", f"pattern={p}", "--set", f"step={k}",
+                    "--set", f"method={m}", "--set", f"work={work}"]
+            one, many = cpu_seconds(exe, args + ["--frames", "1"]), cpu_seconds(exe, args + ["--frames", str(FRAMES + 1)])
+            cells.append(f"{(many - one) / FRAMES * 1000:.1f}")
+        print(f"| {METHODS[m]} | {PATTERNS[p]} | {k} | " + " | ".join(cells) + " |")
+
+
+def cpu_seconds(exe, args):
+    """User + system CPU seconds of one run of the lesson (robust to other work on the machine)."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    with tempfile.TemporaryDirectory() as tmp:
+        run(exe, args + ["--out", f"{tmp}/x.png"])
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
 
 
 def main():
