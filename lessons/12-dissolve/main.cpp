@@ -238,6 +238,7 @@ class Dissolve final : public Lesson {
       glClear(GL_STENCIL_BUFFER_BIT);
       glClearStencil(0);
       values_.assign(static_cast<std::size_t>(f.size.x) * static_cast<std::size_t>(f.size.y), 255);
+      uploadPattern(f.size);  // for the methods that read it in a shader (mix, discard)
     } else {
       const auto start = std::chrono::steady_clock::now();
       values_ = makePattern(static_cast<PatternKind>(pattern), f.size.x, f.size.y);
@@ -251,7 +252,7 @@ class Dissolve final : public Lesson {
       glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the pattern is invisible
       glStencilFunc(GL_NEVER, 0xFF, 0xFF);                  // the test always fails...
       glStencilOp(GL_REPLACE, GL_KEEP, GL_KEEP);            // ...and fail writes the reference
-      uploadPattern(f.size);
+      uploadPattern(f.size);  // read here, and by the methods that read it in a shader (mix, discard)
       patternBit_.set("pattern", 0);
       patternBit_.set("transform", glm::mat4(1.0f));
       for (int bit = 0; bit < 8; ++bit) {
@@ -263,7 +264,6 @@ class Dissolve final : public Lesson {
       glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
       glDisable(GL_STENCIL_TEST);
     }
-    uploadPattern(f.size);  // the methods that read it in a shader (mix, discard)
   }
 
   // The pattern values as an R8 texture, texel (x, y) for window pixel (x, y).
