@@ -84,6 +84,10 @@ LessonInfo lessonInfo() {
        "extra arithmetic per fragment of the scenes (iterations), a stand-in for costly shading: what\n"
        "      shading fewer fragments saves shows in the time",
        0, 4096},
+      {"cell", 'C',
+       "the pattern's cell, in pixels: 1 per pixel; 2, 4, 8 hold one value over each 2x2, 4x4, 8x8 block\n"
+       "      (the share of B is then exact only where the cells fit the frame)",
+       1, 8, 1},
       {"measure", 'Q',
        "count per frame: pixels of each scene by occlusion queries, fragments shaded (pipeline\n"
        "      statistics where present), and the state swept 0..256 (the share of B, switch-backs)",
@@ -100,6 +104,9 @@ LessonInfo lessonInfo() {
       {"blue-noise",
        "half way through void-and-cluster blue noise: even, without a grid",
        {{"pattern", 2}, {"step", 128}}},
+      {"blue-noise-cells",
+       "half way through blue noise held over 4x4 cells: coarser, and whole blocks of pixels to one scene",
+       {{"pattern", 2}, {"step", 128}, {"cell", 4}}},
       {"linear-wipe", "half way through a left-to-right wipe", {{"pattern", 3}, {"step", 128}}},
       {"radial-wipe", "half way through a wipe from the centre out", {{"pattern", 4}, {"step", 128}}},
       {"clock-wipe",
@@ -205,10 +212,10 @@ class Dissolve final : public Lesson {
 
     // 1. The pattern, once: written only when the pattern or the size changes. The stencil keeps
     // it from frame to frame (and keeps what the brush sprayed into it).
-    const int pattern = f.option("pattern");
-    if (pattern != writtenPattern_ || f.size != writtenSize_) {
-      writePattern(f, pattern);
-      writtenPattern_ = pattern, writtenSize_ = f.size;
+    const int pattern = f.option("pattern"), cell = f.option("cell");
+    if (pattern != writtenPattern_ || cell != writtenCell_ || f.size != writtenSize_) {
+      writePattern(f, pattern, cell);
+      writtenPattern_ = pattern, writtenCell_ = cell, writtenSize_ = f.size;
       f.count("pattern_written");
     }
     f.pass("pattern");
@@ -229,7 +236,7 @@ class Dissolve final : public Lesson {
  private:
   // ---- the pattern into the stencil -------------------------------------------------------------
 
-  void writePattern(Frame& f, int pattern) {
+  void writePattern(Frame& f, int pattern, int cell) {
     glDisable(GL_DEPTH_TEST);
     if (pattern == kPainted) {
       // The painted mask starts as all A: every pixel 255, above every state but the last.
@@ -242,6 +249,7 @@ class Dissolve final : public Lesson {
     } else {
       const auto start = std::chrono::steady_clock::now();
       values_ = makePattern(static_cast<PatternKind>(pattern), f.size.x, f.size.y);
+      if (cell > 1) values_ = inCells(static_cast<PatternKind>(pattern), f.size, cell);
       patternMicroseconds_ = static_cast<std::uint64_t>(
           std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
       // Clear to 0, then set each bit plane where the pattern has that bit.
@@ -264,6 +272,18 @@ class Dissolve final : public Lesson {
       glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
       glDisable(GL_STENCIL_TEST);
     }
+  }
+
+  // The pattern made for a frame `cell` times smaller, each value held over a cell x cell block.
+  static std::vector<std::uint8_t> inCells(PatternKind kind, glm::ivec2 size, int cell) {
+    const int w = (size.x + cell - 1) / cell, h = (size.y + cell - 1) / cell;
+    const std::vector<std::uint8_t> small = makePattern(kind, w, h);
+    std::vector<std::uint8_t> values(static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y));
+    for (int y = 0; y < size.y; ++y)
+      for (int x = 0; x < size.x; ++x)
+        values[static_cast<std::size_t>(y * size.x + x)] =
+            small[static_cast<std::size_t>((y / cell) * w + x / cell)];
+    return values;
   }
 
   // The pattern values as an R8 texture, texel (x, y) for window pixel (x, y).
@@ -565,7 +585,7 @@ class Dissolve final : public Lesson {
   SceneTarget targetA_, targetB_;
   GLuint patternTexture_ = 0, query_ = 0, framebuffer_ = 0;
   std::vector<std::uint8_t> values_;  // the pattern, bottom row first
-  int writtenPattern_ = -1;
+  int writtenPattern_ = -1, writtenCell_ = 0;
   glm::ivec2 writtenSize_{0};
   std::uint32_t paintedDabs_ = 0;
   std::uint64_t patternMicroseconds_ = 0;

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Lesson 12's strips and tables: the dissolve at several states per pattern, and what it costs.
 
-Renders lesson 12 headless and writes docs/figures/12-dissolve/strip-<pattern>.png: the frame at
-states k = 0, 32, 64, 128, 192, 224, 256 side by side (the painted mask: k = 128 at times 0.25 s to
-4 s, the brush's stroke growing). Then prints Markdown tables from the lesson's --stats
+Renders lesson 12 headless and writes docs/figures/12-dissolve-strips/strip-<pattern>.png (beside
+docs/figures/12-dissolve/, which the docs-figures target rewrites): the frame at states
+k = 0, 32, 64, 128, 192, 224, 256 side by side (the painted mask: k = 128 at times 0.25 s to 4 s,
+the brush's stroke growing). Then prints Markdown tables from the lesson's --stats
 (--set measure=1): each pattern's clumpiness (8x8 coverage variance) and making time; fragments
 per method; and the CPU time per frame (llvmpipe draws on the CPU; CPU time, unlike wall time,
 hardly changes when other work shares the machine) per method, pattern and state, with and
@@ -30,10 +31,11 @@ METHODS = ["stencil", "draw both, mix", "shade both, discard"]
 STATES = [0, 32, 64, 128, 192, 224, 256]
 PAINT_TIMES = [0.25, 0.5, 1, 1.5, 2, 3, 4]
 FRAMES, WORK, SIZE = 40, 64, "320x240"
-# (method, pattern, state): each scene alone, then half way through blue noise, a wipe and Bayer
-# with the stencil, and blue noise and the wipe by the engines' two ways.
-TIMED = [(0, 2, 0), (0, 2, 256), (0, 2, 128), (0, 3, 128), (0, 1, 128), (1, 2, 128), (1, 3, 128), (2, 2, 128),
-         (2, 3, 128)]
+# (method, pattern, state, cell): each scene alone, then half way through blue noise, a wipe and
+# Bayer with the stencil, blue noise in 2x2, 4x4 and 8x8 cells, and blue noise and the wipe by the
+# engines' two ways.
+TIMED = [(0, 2, 0, 1), (0, 2, 256, 1), (0, 2, 128, 1), (0, 3, 128, 1), (0, 1, 128, 1), (0, 2, 128, 2), (0, 2, 128, 4),
+         (0, 2, 128, 8), (1, 2, 128, 1), (1, 3, 128, 1), (2, 2, 128, 1), (2, 3, 128, 1)]
 
 
 def read_png(path):
@@ -89,7 +91,7 @@ def stats(exe, args):
 
 
 def strips(exe):
-    out = ROOT / "docs/figures/12-dissolve"
+    out = ROOT / "docs/figures/12-dissolve-strips"
     out.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory() as tmp:
         for p, slug in enumerate(SLUGS):
@@ -112,7 +114,7 @@ def strips(exe):
                     row += f[2][y]
                 rows.append(row)
             write_png(out / f"strip-{slug}.png", width, frames[0][1], rows)
-            print(f"wrote docs/figures/12-dissolve/strip-{slug}.png", file=sys.stderr)
+            print(f"wrote docs/figures/12-dissolve-strips/strip-{slug}.png", file=sys.stderr)
 
 
 def tables(exe, timing):
@@ -142,16 +144,16 @@ def tables(exe, timing):
           f"{FRAMES + 1} frames less 1 frame, over {FRAMES}), ms, without and with {WORK} iterations of extra "
           f"work per fragment (the `work` option), {SIZE}:")
     print()
-    print(f"| method | pattern | state k | work 0 | work {WORK} |")
-    print("|---|---|---|---|---|")
-    for m, p, k in TIMED:
+    print(f"| method | pattern | cell | state k | work 0 | work {WORK} |")
+    print("|---|---|---|---|---|---|")
+    for m, p, k, cell in TIMED:
         cells = []
         for work in (0, WORK):
             args = ["--size", SIZE, "--variant", "dissolve", "--set", f"pattern={p}", "--set", f"step={k}",
-                    "--set", f"method={m}", "--set", f"work={work}"]
+                    "--set", f"method={m}", "--set", f"work={work}", "--set", f"cell={cell}"]
             one, many = cpu_seconds(exe, args + ["--frames", "1"]), cpu_seconds(exe, args + ["--frames", str(FRAMES + 1)])
             cells.append(f"{(many - one) / FRAMES * 1000:.1f}")
-        print(f"| {METHODS[m]} | {PATTERNS[p]} | {k} | " + " | ".join(cells) + " |")
+        print(f"| {METHODS[m]} | {PATTERNS[p]} | {cell} x {cell} | {k} | " + " | ".join(cells) + " |")
 
 
 def cpu_seconds(exe, args):

@@ -82,6 +82,22 @@ TEST(Dissolve, ShareOfBIsKOver256AtEveryStateForEveryMethod) {
     }
 }
 
+TEST(Dissolve, CellsKeepTheShareWithin1Over256) {
+  // A pattern held over cell x cell blocks is exact in cells: within one cell (cell^2 pixels) of
+  // k n / 256, less than n / 256 here; and still monotone.
+  for (const char* cell : {"2", "4", "8"}) {
+    const auto r =
+        run("cells", std::string("--variant blue-noise-cells --set measure=1 --set cell=") + cell, true);
+    if (!r) GTEST_SKIP() << "no GL context";
+    const long long n = r->count("pixels"), c = std::stoll(cell);
+    EXPECT_LE(r->count("sweep_max_error_256ths_of_a_pixel"), 256 * c * c) << "cell " << cell;
+    EXPECT_LE(r->count("sweep_max_error_256ths_of_a_pixel"), n) << "cell " << cell;
+    EXPECT_EQ(r->count("sweep_switch_backs"), 0) << "cell " << cell;
+    EXPECT_EQ(r->count("sweep_neither_or_both"), 0) << "cell " << cell;
+    EXPECT_EQ(r->count("sweep_b_at_start") + r->count("sweep_a_at_end"), 0) << "cell " << cell;
+  }
+}
+
 TEST(Dissolve, EachPixelShowsBWhereItsStencilIsBelowK) {
   // Not the lesson's sweep: the frame as written and the stencil it leaves, compared per pixel.
   for (int p = 0; p < kPatterns; ++p)
