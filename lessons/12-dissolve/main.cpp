@@ -30,7 +30,10 @@
 // For comparison (the `method` option), what engines do instead: draw both scenes whole into
 // textures and pick per pixel in a full-screen pass, or shade every fragment of both and discard
 // by the pattern in the fragment shader (a dithered cross-fade). Both shade every fragment of both
-// scenes; the stencil shades each pixel's own scene only.
+// scenes; the stencil shades each pixel's own scene only. Rasterizers shade in blocks of pixels,
+// though, and a block with one pixel to draw is shaded whole: a pattern finer than the block
+// (noise, Bayer) spends most of the saving, which the `cell` option (the pattern held over blocks)
+// and the `work` option (costly shading) let one measure; docs/12-dissolve.md has the figures.
 
 #include <algorithm>
 #include <array>
