@@ -209,7 +209,7 @@ double coverageVariance(const std::vector<std::uint8_t>& pattern, int width, int
       pattern.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))
     throw std::invalid_argument("coverageVariance: the pattern is not width * height values");
   if (window < 1 || window > width || window > height)
-    throw std::invalid_argument("coverageVariance: a " + std::to_string(window) +
+    throw std::invalid_argument("coverageVariance: the " + std::to_string(window) +
                                 "-pixel window does not fit");
   // A summed-area table of "below k", one row and column of zeros in front.
   const std::size_t w1 = static_cast<std::size_t>(width) + 1;

@@ -46,6 +46,7 @@
 
 #include "geometry/dither.h"
 #include "geometry/shapes.h"
+#include "gl/errors.h"
 #include "gl/gpu_mesh.h"
 #include "gl/image.h"
 #include "gl/lesson.h"
@@ -59,6 +60,7 @@ constexpr int kStates = 257;            // k = 0..256: 0 all A, 256 all B
 constexpr double kDissolveSeconds = 4;  // with step -1, k climbs 0..256 every 4 s
 constexpr int kMethodStencil = 0, kMethodMix = 1, kMethodDiscard = 2;
 constexpr int kPainted = 6;  // the pattern option: 0..5 PatternKind, 6 painted
+constexpr int kWindow = 8;   // the side of the windows the clumpiness is measured over
 
 LessonInfo lessonInfo() {
   LessonInfo info;
@@ -91,13 +93,19 @@ LessonInfo lessonInfo() {
        "the pattern's cell, in pixels: 1 per pixel; 2, 4, 8 hold one value over each 2x2, 4x4, 8x8 block\n"
        "      (the share of B is then exact only where the cells fit the frame)",
        1, 8, 1},
+      {"stroke", 'D',
+       "the painted mask's brush stroke, in dabs of 1/60 s along a fixed figure of eight; -1 follows\n"
+       "      time (a dab each 1/60 s)",
+       -1, 1800, -1},
       {"measure", 'Q',
        "count per frame: pixels of each scene by occlusion queries, fragments shaded (pipeline\n"
        "      statistics where present), and the state swept 0..256 (the share of B, switch-backs)",
        0},
   };
   info.variants = {
-      {"dissolve", "blue noise, the state following time: a quarter of the way at t = 1 s", {}},
+      {"dissolve",
+       "blue noise, k following time (0..256 every 4 s): all A at t = 0, a quarter of the way at --time 1",
+       {}},
       {"white-noise",
        "half way (k = 128) through white noise: clumps and holes",
        {{"pattern", 0}, {"step", 128}}},
@@ -116,8 +124,8 @@ LessonInfo lessonInfo() {
        "half way through a clockwise wipe from twelve o'clock",
        {{"pattern", 5}, {"step", 128}}},
       {"painted",
-       "the GLUT demo's mask: B sprayed through A along a brush stroke",
-       {{"pattern", kPainted}, {"step", 128}}},
+       "the GLUT demo's mask: B sprayed through A along a brush stroke of 60 dabs (1 s), at any time",
+       {{"pattern", kPainted}, {"step", 128}, {"stroke", 60}}},
       {"start", "state 0 with the exact ends: only scene A", {{"step", 0}}},
       {"end", "state 256: only scene B", {{"step", 256}}},
       {"start-clamped",
@@ -207,6 +215,11 @@ class Dissolve final : public Lesson {
   }
 
   void render(Frame& f) override {
+    // The clumpiness is measured over 8x8 windows: a smaller frame is refused before anything is drawn.
+    if (f.on("measure") && (f.size.x < kWindow || f.size.y < kWindow))
+      throw UsageError("--set measure=1 needs a frame of at least " + std::to_string(kWindow) + "x" +
+                       std::to_string(kWindow) + " pixels (its clumpiness window), got " +
+                       std::to_string(f.size.x) + "x" + std::to_string(f.size.y));
     const int k = dissolveState(f);
     f.count("state", static_cast<std::uint64_t>(k));
     GLint framebuffer = 0;
@@ -315,7 +328,8 @@ class Dissolve final : public Lesson {
                         2.0f * p.y / static_cast<float>(f.size.y) - 1.0f, 0.0f, 1.0f});
       }
     };
-    const int dabs = stroke ? std::clamp(static_cast<int>(f.time * 60.0), 0, 60 * 30) : 0;
+    const int length = f.option("stroke") >= 0 ? f.option("stroke") : static_cast<int>(f.time * 60.0);
+    const int dabs = stroke ? std::clamp(length, 0, 60 * 30) : 0;
     for (int d = 0; d < dabs; ++d) {
       const float s = static_cast<float>(d) / 60.0f;  // a figure of eight across the frame
       const glm::vec2 c(0.5f + 0.35f * std::sin(1.3f * s), 0.5f + 0.3f * std::sin(2.6f * s));
@@ -479,7 +493,7 @@ class Dissolve final : public Lesson {
     f.count("pattern_us", patternMicroseconds_);
     double varianceSum = 0;
     for (int s = 1; s < 256; ++s) {
-      const double v = coverageVariance(values_, f.size.x, f.size.y, s, 8);
+      const double v = coverageVariance(values_, f.size.x, f.size.y, s, kWindow);
       varianceSum += v;
       if (s % 32 == 0)
         f.count("coverage_variance_e9.k" + std::to_string(s),

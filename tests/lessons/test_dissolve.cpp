@@ -197,10 +197,13 @@ TEST(Dissolve, TheEnginesWaysGiveTheSamePicture) {
 
 TEST(Dissolve, TheBrushOnlyAdds) {
   // The painted mask: 255 (A) and the brush's 0 (B from state 1) and nothing else; the stroke at
-  // 0.5 s is inside the stroke at 1 s; half way, B shows exactly where the brush went.
-  const auto early = run("early", "--variant painted --set which=1 --time 0.5");
+  // 0.5 s (following time) is inside the variant's own stroke of 1 s, which it shows at t = 0
+  // too; half way, B shows exactly where the brush went.
+  const auto early = run("early", "--set pattern=6 --set step=128 --set which=1 --time 0.5");
   if (!early) GTEST_SKIP() << "no GL context";
-  const auto late = run("late", "--variant painted --set which=1");
+  const auto late = run("late", "--variant painted --set which=1 --time 0");
+  const auto later = run("later", "--variant painted --set which=1 --time 1");
+  EXPECT_EQ(late->stencil.pixels, later->stencil.pixels);  // the variant's stroke ignores time
   std::size_t other = 0, lost = 0, earlyPainted = 0, latePainted = 0, wrong = 0;
   for (std::size_t i = 0; i < late->stencil.pixels.size(); ++i) {
     const std::uint8_t e = early->stencil.pixels[i], l = late->stencil.pixels[i];
