@@ -4,12 +4,14 @@
 Renders lesson 12 headless and writes docs/figures/12-dissolve-strips/strip-<pattern>.png (beside
 docs/figures/12-dissolve/, which the docs-figures target rewrites): the frame at states
 k = 0, 32, 64, 128, 192, 224, 256 side by side (the painted mask: k = 128 at times 0.25 s to 4 s,
-the brush's stroke growing). Then prints Markdown tables from the lesson's --stats
-(--set measure=1): each pattern's clumpiness (8x8 coverage variance) and making time; fragments
-per method; and the CPU time per frame (llvmpipe draws on the CPU; CPU time, unlike wall time,
-hardly changes when other work shares the machine) per method, pattern and state, with and
-without WORK iterations of extra work per fragment: FRAMES + 1 frames less one frame (which writes
-the pattern), over FRAMES.
+the brush's stroke growing); crop-<pattern>.png for white noise, Bayer and blue noise: the centre
+40x40 pixels at k = 64, 128, 192, each scene flat (A red, B blue), magnified 4 times; and
+start-clamped-crop.png: the top left 80x60 pixels of the clamped reference's state 0, magnified 4
+times. Then prints Markdown tables from the lesson's --stats (--set measure=1): each pattern's
+clumpiness (8x8 coverage variance) and making time; fragments per method; and the CPU time per
+frame (llvmpipe draws on the CPU; CPU time, unlike wall time, hardly changes when other work shares
+the machine) per method, pattern and state, with and without WORK iterations of extra work per
+fragment: FRAMES + 1 frames less one frame (which writes the pattern), over FRAMES.
 
     tests/lessons/dissolve_figures.py BUILD_DIR [--no-strips] [--no-timing]
 
@@ -30,6 +32,10 @@ SLUGS = ["white-noise", "bayer", "blue-noise", "linear-wipe", "radial-wipe", "cl
 METHODS = ["stencil", "draw both, mix", "shade both, discard"]
 STATES = [0, 32, 64, 128, 192, 224, 256]
 PAINT_TIMES = [0.25, 0.5, 1, 1.5, 2, 3, 4]
+# The crops, for the three dithers (the wipes and the painted mask have no grain to lose): states
+# 64, 128, 192, each scene flat (A red, B blue), a CROP-pixel square from the frame's centre at
+# 320x240, magnified ZOOM times.
+CROP_SLUGS, CROP_STATES, CROP, ZOOM = ["white-noise", "bayer", "blue-noise"], [64, 128, 192], 40, 4
 FRAMES, WORK, SIZE = 40, 64, "320x240"
 # (method, pattern, state, cell): each scene alone, then half way through blue noise, a wipe and
 # Bayer with the stencil, blue noise in 2x2, 4x4 and 8x8 cells, and blue noise and the wipe by the
@@ -90,6 +96,52 @@ def stats(exe, args):
         return json.loads(run(exe, args + ["--stats", "--out", f"{tmp}/x.png"]))
 
 
+def magnified(frame, left, top, width, height, zoom):
+    """Rows of the width x height region at (left, top) of a read_png frame, each pixel zoom x zoom."""
+    rows = []
+    for y in range(top, top + height):
+        row = bytearray()
+        for x in range(left, left + width):
+            row += bytes(frame[2][y][4 * x:4 * x + 4]) * zoom
+        rows += [row] * zoom
+    return rows
+
+
+def side_by_side(pictures, gap=4):
+    """One picture of lists of rows (all as tall) side by side, white gaps between them."""
+    rows = []
+    for y in range(len(pictures[0])):
+        row = bytearray()
+        for j, p in enumerate(pictures):
+            if j:
+                row += bytes([255, 255, 255, 255]) * gap
+            row += p[y]
+        rows.append(row)
+    return len(rows[0]) // 4, len(rows), rows
+
+
+def crops(exe, tmp, out):
+    """Per pattern, CROP x CROP pixels at three states magnified ZOOM times: the grain that the
+    strips lose when a page shrinks them. And the clamped reference's state 0, whose 1/256 of
+    pixels in B are too few to see at table size."""
+    for slug in CROP_SLUGS:
+        pictures = []
+        for i, k in enumerate(CROP_STATES):
+            png = pathlib.Path(tmp) / f"crop-{slug}-{i}.png"
+            run(exe, ["--size", SIZE, "--time", "1", "--variant", "dissolve", "--set", f"pattern={SLUGS.index(slug)}",
+                      "--set", f"step={k}", "--set", "which=1", "--out", str(png)])
+            frame = read_png(png)
+            pictures.append(magnified(frame, (frame[0] - CROP) // 2, (frame[1] - CROP) // 2, CROP, CROP, ZOOM))
+        write_png(out / f"crop-{slug}.png", *side_by_side(pictures))
+        print(f"wrote docs/figures/12-dissolve-strips/crop-{slug}.png", file=sys.stderr)
+    png = pathlib.Path(tmp) / "start-clamped.png"
+    run(exe, ["--size", SIZE, "--time", "1", "--variant", "start-clamped", "--out", str(png)])
+    frame = read_png(png)
+    width, height = 80, 60  # a quarter of the frame's width and height, from its top left
+    write_png(out / "start-clamped-crop.png", width * ZOOM, height * ZOOM, magnified(frame, 0, 0, width, height, ZOOM))
+    print("wrote docs/figures/12-dissolve-strips/start-clamped-crop.png", file=sys.stderr)
+
+
 def strips(exe):
     out = ROOT / "docs/figures/12-dissolve-strips"
     out.mkdir(parents=True, exist_ok=True)
@@ -115,6 +167,7 @@ def strips(exe):
                 rows.append(row)
             write_png(out / f"strip-{slug}.png", width, frames[0][1], rows)
             print(f"wrote docs/figures/12-dissolve-strips/strip-{slug}.png", file=sys.stderr)
+        crops(exe, tmp, out)
 
 
 def tables(exe, timing):
