@@ -205,6 +205,7 @@ void Session::renderFrame(double time, FrameRequest request) {
       for (std::size_t i = 0; i < mask.pixels.size(); ++i) mask.pixels[i] = stencil.pixels[i] == 0 ? 255 : 0;
       writePng(*commandLine.maskOut / (std::string(name) + ".png"), mask);
     });
+  frame.pointer = pointer;
   lesson->render(frame);
   recorder->endFrame();
   viewProjection = frame.projection * frame.view;

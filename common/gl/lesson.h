@@ -134,6 +134,11 @@ class Frame {
   using ShadowMaskWriter = std::function<void(std::string_view name)>;
   void setShadowMaskWriter(ShadowMaskWriter writer) { shadowMaskWriter_ = std::move(writer); }
 
+  // In the window, while the right mouse button is held over the picture: the framebuffer pixel
+  // under the pointer (x right, y up from the bottom left corner, in pixels). Empty otherwise, and
+  // always in headless runs. Lessons that paint (lesson 12's brush) read it; others ignore it.
+  std::optional<glm::vec2> pointer;
+
  private:
   const std::vector<Option>& options_;
   PassRecorder& recorder_;

@@ -18,8 +18,13 @@ T parseNumber(const std::string& flag, const std::string& text) {
   const char* end = text.data() + text.size();
   auto [ptr, ec] = std::from_chars(text.data(), end, value);
   if (ec == std::errc::result_out_of_range && ptr == end)
-    throw UsageError(flag + " " + text + " is out of range");
-  if (ec != std::errc() || ptr != end) throw UsageError(flag + " expects a number, got '" + text + "'");
+    throw UsageError(flag + " " + text + " is out of range" +
+                     (std::is_integral_v<T> ? " (" + std::to_string(std::numeric_limits<T>::min()) + ".." +
+                                                  std::to_string(std::numeric_limits<T>::max()) + ")"
+                                            : std::string()));
+  if (ec != std::errc() || ptr != end)
+    throw UsageError(flag + (std::is_integral_v<T> ? " expects an integer" : " expects a number") +
+                     ", got '" + text + "'");
   if constexpr (std::is_floating_point_v<T>)
     if (!std::isfinite(value)) throw UsageError(flag + " expects a finite number, got '" + text + "'");
   return value;
@@ -82,7 +87,9 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
     } else if (flag == "--size") {
       const std::string s = value();
       const auto x = s.find('x');
-      if (x == std::string::npos) throw UsageError("--size expects WxH, got '" + s + "'");
+      if (x == std::string::npos || s.find_first_not_of("0123456789", 0) != x ||
+          s.find_first_not_of("0123456789", x + 1) != std::string::npos)
+        throw UsageError("--size expects WxH, got '" + s + "'");
       cl.width = parseNumber<int>("--size", s.substr(0, x));
       cl.height = parseNumber<int>("--size", s.substr(x + 1));
       if (cl.width < 1 || cl.height < 1 || cl.width > 8192 || cl.height > 8192)

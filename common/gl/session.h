@@ -39,6 +39,7 @@ class Session {
   glm::mat4 viewProjection{1.0f};          // the last frame's
   bool saveShadowMasks = false;            // Frame::shadowMask writes under --mask-out (the last frame)
   bool reversedDepth = false;              // the variant's reversed float depth, where the driver allows it
+  std::optional<glm::vec2> pointer;        // Frame::pointer for the next frame (the window sets it)
 
  private:
   void checkNeeds(const std::vector<Feature>&, const std::string& who) const;

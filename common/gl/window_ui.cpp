@@ -28,6 +28,7 @@ struct WindowState {
   View view = View::Colour;
   int passStep = -1;  // -1: the finished frame; k: the snapshot after pass k
   bool dragging = false;
+  bool pointing = false;  // the right button held: Frame::pointer (a lesson's brush)
   double lastX = 0, lastY = 0;
   bool screenshot = false;
   int screenshots = 0;
@@ -77,6 +78,8 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
 
 void onMouseButton(GLFWwindow* w, int button, int action, int) {
   WindowState& st = stateOf(w);
+  if (button == GLFW_MOUSE_BUTTON_RIGHT)
+    st.pointing = action == GLFW_PRESS && !ImGui::GetIO().WantCaptureMouse;
   if (button != GLFW_MOUSE_BUTTON_LEFT) return;
   st.dragging = action == GLFW_PRESS && !ImGui::GetIO().WantCaptureMouse;
   glfwGetCursorPos(w, &st.lastX, &st.lastY);
@@ -177,6 +180,7 @@ void drawPanel(WindowState& st, double fps) {
   ImGui::Text("%.0f fps, %llu draw calls, %llu triangles", fps, static_cast<unsigned long long>(draws),
               static_cast<unsigned long long>(triangles));
   ImGui::TextUnformatted("drag: orbit  wheel: zoom  R: reset  S: screenshot  Esc: quit");
+  ImGui::TextUnformatted("right drag: the lesson's brush, where it has one");
   ImGui::End();
 }
 
@@ -222,6 +226,19 @@ int runWindow(Session& s) {
         st.time += now - last;
       last = now;
 
+      // The pointer in framebuffer pixels (the framebuffer is the window's size; a HiDPI window
+      // counts its cursor in screen coordinates), y up.
+      s.pointer.reset();
+      if (st.pointing) {
+        double cx = 0, cy = 0;
+        int ww = 1, wh = 1;
+        glfwGetCursorPos(window, &cx, &cy);
+        glfwGetWindowSize(window, &ww, &wh);
+        const float sx = static_cast<float>(w) / static_cast<float>(std::max(ww, 1)),
+                    sy = static_cast<float>(h) / static_cast<float>(std::max(wh, 1));
+        s.pointer =
+            glm::vec2(static_cast<float>(cx) * sx, static_cast<float>(h) - static_cast<float>(cy) * sy);
+      }
       const int step = std::min(st.passStep, static_cast<int>(s.info.passes.size()) - 1);
       s.saveShadowMasks = cl.frames && frame + 1 >= *cl.frames;  // --mask-out: the last frame, as headless
       s.renderFrame(st.time, {.measure = false,

@@ -155,7 +155,8 @@ TEST(CommandLine, NumbersThatDoNotFitAreOutOfRange) {
       parse(args);
       ADD_FAILURE() << args[1] << " was accepted";
     } catch (const UsageError& e) {
-      EXPECT_NE(std::string(e.what()).find("is out of range"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("is out of range (-2147483648..2147483647)"), std::string::npos)
+          << e.what();
     }
   }
 }
