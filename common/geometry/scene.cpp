@@ -864,13 +864,27 @@ SolidsSeen solidsSeenFrom(const Scene& scene, const std::vector<glm::mat4>& mode
     if (!o.casts || !o.caster.report.closed()) continue;
     const Mesh& mesh = o.caster.mesh;
     const bool facesIn = signedVolume(mesh) < 0.0;
-    const SolidSide side =
-        solidSide(mesh, facesIn, glm::vec3(glm::inverse(models[i]) * glm::vec4(eye, 1.0f)));
+    const glm::mat4 toObject = glm::inverse(models[i]);
+    const glm::vec3 eyeHere = glm::vec3(toObject * glm::vec4(eye, 1.0f));
+    const SolidSide side = solidSide(mesh, facesIn, eyeHere);
     seen.room[i] = side.room;
     if (!seen.refusal.empty()) continue;
     const std::string where =
         scene.file.empty() ? "" : scene.file.string() + ":" + std::to_string(o.line) + ": ";
-    if (facesIn && !side.room)
+    // On a caster's surface a point is neither inside nor outside its solid.
+    std::string lightOn;
+    for (std::size_t l = 0; l < scene.lights.size() && lightOn.empty(); ++l) {
+      const glm::vec4 light = toObject * scene.lights[l].position;
+      if (light.w != 0.0f && onSurface(mesh, glm::dvec3(glm::vec3(light) / light.w)))
+        lightOn = std::to_string(l);
+    }
+    if (onSurface(mesh, glm::dvec3(eyeHere)))
+      seen.refusal = where + "the eye lies on the surface of caster '" + o.name +
+                     "', neither inside nor outside it: move the camera off it";
+    else if (!lightOn.empty())
+      seen.refusal = where + "light " + lightOn + " lies on the surface of caster '" + o.name +
+                     "', neither inside nor outside it: move the light off it (a hair is enough)";
+    else if (facesIn && !side.room)
       seen.refusal = where + "caster '" + o.name +
                      "' faces inwards and the eye is outside it: a solid written inside out (turn its faces "
                      "round, or put the eye inside: a mesh facing inwards is a room)";
@@ -878,7 +892,8 @@ SolidsSeen solidsSeenFrom(const Scene& scene, const std::vector<glm::mat4>& mode
       seen.refusal =
           where + "caster '" + o.name +
           "' holds the eye, so it is a room, and it is not convex: its walls would shadow parts of "
-          "its own inside, which z-fail cannot count (its solid reaches to infinity)";
+          "its own inside, which z-fail cannot count (its solid reaches to infinity; split it into "
+          "convex rooms, or give it 'casts no')";
   }
   return seen;
 }

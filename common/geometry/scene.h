@@ -112,9 +112,10 @@ struct Scene {
 
 // Rooms and buried lights (geometry/solid.h) for one frame: which closed casters hold the eye,
 // and why lessons 15 and 16 cannot draw the scene, if they cannot (one line naming the object;
-// empty when they can): a caster whose faces point in seen from outside (a solid written inside
-// out), or a room that is not convex (its walls would shadow parts of its own inside, and the
-// volume of a solid that reaches to infinity is not one z-fail can count).
+// empty when they can): the eye or a point light on a caster's surface (neither inside nor
+// outside it), a caster whose faces point in seen from outside (a solid written inside out), or
+// a room that is not convex (its walls would shadow parts of its own inside, and the volume of a
+// solid that reaches to infinity is not one z-fail can count).
 struct SolidsSeen {
   std::vector<bool> room;  // per object
   std::string refusal;

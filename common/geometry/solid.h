@@ -19,6 +19,11 @@ namespace stencil {
 // surface or an open mesh. O(triangles), in double precision.
 int windingNumber(const Mesh& mesh, const glm::dvec3& point);
 
+// Whether a point lies on a mesh's surface, within 1e-6 of the mesh's extent seen from it: there
+// a closed mesh's winding number is no whole number (a half on a face, a quarter on a box's
+// edge), and which side of the solid the point is on has no answer. O(triangles).
+bool onSurface(const Mesh& mesh, const glm::dvec3& point);
+
 // How one closed caster stands towards an eye (object space, a point).
 struct SolidSide {
   bool facesIn = false;  // its faces point inwards (negative signed volume)

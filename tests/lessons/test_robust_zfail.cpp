@@ -168,7 +168,7 @@ TEST(RobustZFail, ASceneFileGetsAMaskPerLightTheLastOneIsTheFinalStencil) {
 
 TEST(RobustZFail, ABoundedLightAddsNothingBeyondItsRadiusAndShadesAsLesson16Does) {
   // One shading rule for both lessons (shaders/common/light.frag): a point light's radius is
-  // where its light reaches zero. The scene's light (radius 3 at (0, 2.5, 0)) may change only
+  // where its light reaches zero. The scene's light (radius 3 at (0, 1.5, 0)) may change only
   // pixels inside the screen rectangle of its bounding cube; the same scene with the light
   // turned off is the ambient picture.
   const std::string file = std::string(SCENES_DIR) + "/hard/light-radius-shades-nothing-beyond.scene";
@@ -177,7 +177,7 @@ TEST(RobustZFail, ABoundedLightAddsNothingBeyondItsRadiusAndShadesAsLesson16Does
     std::ifstream in(file);
     std::ofstream out(dark);
     for (std::string line; std::getline(in, line);)
-      out << (line.rfind("light point", 0) == 0 ? "light point 0 2.5 0 color 0 0 0 radius 3" : line) << "\n";
+      out << (line.rfind("light point", 0) == 0 ? "light point 0 1.5 0 color 0 0 0 radius 3" : line) << "\n";
   }
   const auto lit = run("bounded", "--scene " + file), ambient = run("ambient", "--scene " + dark.string());
   const auto sixteen = runLesson(LESSON_16, "bounded", "--scene " + file);
@@ -189,7 +189,7 @@ TEST(RobustZFail, ABoundedLightAddsNothingBeyondItsRadiusAndShadesAsLesson16Does
   glm::vec2 lo(1e9f), hi(-1e9f);
   for (int corner = 0; corner < 8; ++corner) {
     const glm::vec3 offset(corner & 1 ? 3.0f : -3.0f, corner & 2 ? 3.0f : -3.0f, corner & 4 ? 3.0f : -3.0f);
-    const glm::vec4 clip = viewProjection * glm::vec4(glm::vec3(0, 2.5f, 0) + offset, 1.0f);
+    const glm::vec4 clip = viewProjection * glm::vec4(glm::vec3(0, 1.5f, 0) + offset, 1.0f);
     const glm::vec2 pixel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(w, h);
     lo = glm::min(lo, pixel);
     hi = glm::max(hi, pixel);

@@ -1,6 +1,6 @@
 // Checks a scene lesson's shadows against a CPU ray cast, light by light:
 //
-//   scene_oracle [--expect-failure] [--variant NAME] LESSON SCENE WxH [TIME]
+//   scene_oracle [--expect-failure] [--keep] [--variant NAME] LESSON SCENE WxH [TIME]
 //
 // runs LESSON --headless --quiet --scene SCENE --size WxH --time TIME --mask-out DIR (and
 // --variant NAME when given), then for each light i compares DIR/light-<i>.png (white: lit) with
@@ -9,7 +9,8 @@
 // light's radius) are judged; pixels on an edge of its picture are forgiven. One line per light; exit 0 when
 // all agree, 1 when one does not (with
 // --expect-failure the other way round: the scene shows an artifact of the lesson), 2 for bad
-// input, 77 when the lesson cannot get a GL context.
+// input, 77 when the lesson cannot get a GL context. DIR (a folder per run under the temporary
+// folder) is removed when every light agrees, unless --keep.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -93,9 +94,12 @@ int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
   bool expectFailure = false;
   std::string variant;
+  bool keep = false;
   while (!args.empty() && args.front().starts_with("--")) {
     if (args.front() == "--expect-failure") {
       expectFailure = true;
+    } else if (args.front() == "--keep") {
+      keep = true;
     } else if (args.front() == "--variant" && args.size() > 1) {
       args.erase(args.begin());
       variant = args.front();
@@ -105,7 +109,7 @@ int main(int argc, char** argv) {
     args.erase(args.begin());
   }
   if (args.size() < 3 || args.size() > 4) {
-    std::cerr << "usage: scene_oracle [--expect-failure] [--variant NAME] LESSON SCENE WxH [TIME]\n";
+    std::cerr << "usage: scene_oracle [--expect-failure] [--keep] [--variant NAME] LESSON SCENE WxH [TIME]\n";
     return 2;
   }
   const std::string lesson = args[0], sceneFile = args[1], sizeText = args[2];
@@ -142,6 +146,10 @@ int main(int argc, char** argv) {
     return 1;
   }
   const int result = compareLights(scene, masks, size, time);
+  if (result == 0 && !keep) {  // nothing to look at: the folder goes, unless --keep
+    std::filesystem::remove_all(masks);
+    std::cout << "(the masks and pictures are removed when the ray cast agrees; --keep keeps them)\n";
+  }
   if (result == 2) return 1;  // a missing mask is a lesson's bug, whatever was expected
   if (expectFailure) {
     std::cout << (result == 1 ? "the ray cast disagrees, as expected\n"

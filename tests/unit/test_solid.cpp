@@ -30,6 +30,10 @@ TEST(Solid, WindingNumbersOfClosedMeshes) {
   const Mesh torus = makeTorus(1.0f, 0.25f, 32, 16);
   EXPECT_EQ(windingNumber(torus, {0, 0, 0}), 0) << "the hole";
   EXPECT_EQ(windingNumber(torus, {1, 0, 0}), 1) << "inside the ring";
+  EXPECT_TRUE(onSurface(cube, {0, 1, 0.3})) << "on a face: a half";
+  EXPECT_TRUE(onSurface(cube, {1, 1, 0.3})) << "on an edge: a quarter";
+  EXPECT_FALSE(onSurface(cube, {0, 1.0001, 0.3}));
+  EXPECT_FALSE(onSurface(cube, {0, 0.9999, 0.3}));
 }
 
 TEST(Solid, ABoxAroundTheEyeIsARoomWhicheverWayItFaces) {
