@@ -1,5 +1,6 @@
 #include "gl/options.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -109,8 +110,11 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
       const std::string s = value();
       const auto eq = s.find('=');
       if (eq == std::string::npos) throw UsageError("--set expects NAME=VALUE, got '" + s + "'");
-      cl.settings.emplace_back(s.substr(0, eq),
-                               parseNumber<int>("--set " + s.substr(0, eq), s.substr(eq + 1)));
+      const std::string name = s.substr(0, eq);
+      if (std::none_of(info.options.begin(), info.options.end(),
+                       [&](const Option& o) { return o.name == name; }))
+        throw UsageError("unknown option '" + name + "'; --help lists the options");
+      cl.settings.emplace_back(name, parseNumber<int>("--set " + name, s.substr(eq + 1)));
     } else if (flag == "--out")
       cl.out = value();
     else if (flag == "--stencil-out")

@@ -256,6 +256,7 @@ class RobustZFail final : public Lesson {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);  // depth: the farthest
     const std::vector<glm::mat4> models = modelsAt(f.time);
     const std::vector<ShiningLight> lights = lightsInOrder(f);
+    f.count("lights_buried", 0);  // in --stats in every frame, buried lights or none
     mirroredView_ = glm::determinant(glm::mat3(f.view)) < 0.0f;
     // Rooms: a closed caster around the eye is a shell seen from inside (geometry/solid.h).
     solids_ = solidsSeenFrom(scene_, models, f.eye);

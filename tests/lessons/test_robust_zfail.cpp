@@ -130,6 +130,7 @@ TEST(RobustZFail, StatsCountTheClosedVolumesParts) {
     // A silhouette edge extrudes into one quad: two triangles.
     EXPECT_EQ(r->count("side_triangles"), 2 * r->count("silhouette_edges"));
     EXPECT_GT(r->count("light_cap_triangles"), 0);
+    EXPECT_EQ(r->count("lights_buried"), 0);  // reported when none is, not left out
   }
   // Every caster triangle faces a point light or not: the two caps hold each triangle once per light.
   const long long caps = one->count("light_cap_triangles") + one->count("dark_cap_triangles");
