@@ -12,6 +12,7 @@ packages=(
   libgl1 libglx-mesa0                # GLX for the window (GLFW loads libGL at run time)
   libglfw3-dev libimgui-dev          # the window and its panel
   libtinyobjloader-dev               # OBJ meshes in scene files
+  nlohmann-json3-dev                 # the --stats JSON, written and read
   libgtest-dev libbenchmark-dev      # unit tests, micro-benchmarks
   xvfb xauth                         # the window test runs under a virtual display
 )

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <numeric>
 #include <sstream>
 
@@ -216,48 +217,52 @@ void Session::renderFrame(double time, FrameRequest request) {
 
 namespace {
 
-std::string jsonNumber(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4f", v);
-  return buf;
+// A time in milliseconds, kept to 4 decimals (llvmpipe's timings are noisier than that).
+nlohmann::ordered_json milliseconds(const std::optional<double>& v) {
+  if (!v) return nullptr;
+  return std::round(*v * 1e4) / 1e4;
 }
-std::string jsonNumber(const std::optional<double>& v) {
-  return v ? jsonNumber(*v) : "null";
-}
-std::string jsonNumber(const std::optional<std::uint64_t>& v) {
-  return v ? std::to_string(*v) : "null";
+template <typename T>
+nlohmann::ordered_json orNull(const std::optional<T>& v) {
+  return v ? nlohmann::ordered_json(*v) : nlohmann::ordered_json(nullptr);
 }
 
-// Where gpu_ms is null for a reason, the reason beside it.
-std::string gpuNullReason(const PassStats& p) {
-  if (p.gpuMs || p.gpuMsNullReason.empty()) return "";
-  return ", \"gpu_ms_null_reason\": \"" + p.gpuMsNullReason + "\"";
+nlohmann::ordered_json passJson(const PassStats& p) {
+  nlohmann::ordered_json j = {{"name", p.name},
+                              {"draw_calls", p.drawCalls},
+                              {"triangles", p.triangles},
+                              {"samples_passed", orNull(p.samplesPassed)},
+                              {"primitives_submitted", orNull(p.primitivesSubmitted)},
+                              {"gpu_ms", milliseconds(p.gpuMs)}};
+  if (!p.gpuMs && !p.gpuMsNullReason.empty()) j["gpu_ms_null_reason"] = p.gpuMsNullReason;
+  j["cpu_ms"] = milliseconds(p.cpuMs);
+  return j;
 }
 
+// The --stats document (README, "Every lesson takes the same flags"), keys in this order.
 std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
   const auto& passes = s.recorder->passStats();
-  std::ostringstream out;
   const GlFeatures& f = s.context->features();
-  out << std::boolalpha << "{\n  \"lesson\": \"" << s.info.id << "\",\n  \"variant\": \"" << s.variant
-      << "\",\n"
-      << "  \"backend\": \"" << backendName(s.context->backend()) << "\",\n  \"renderer\": \"" << f.renderer
-      << "\",\n  \"size\": [" << s.framebuffer->width() << ", " << s.framebuffer->height() << "],\n"
-      << "  \"time\": " << s.commandLine.time << ",\n  \"frames\": " << frameMs.size() << ",\n"
-      << "  \"depth\": \"" << depthFormatName(s.framebuffer->depthFormat())
-      << (s.reversedDepth ? "-reversed" : "") << "\",\n"
-      << "  \"features\": {\"depth_bounds_test\": " << f.depthBoundsTest
-      << ", \"pipeline_statistics\": " << f.pipelineStatistics << ", \"clip_control\": " << f.clipControl
-      << ", \"khr_debug\": " << f.khrDebug << ", \"depth_clamp\": " << f.depthClamp << "},\n"
-      << "  \"passes\": [\n";
+  nlohmann::ordered_json out = {{"lesson", s.info.id},
+                                {"variant", s.variant},
+                                {"backend", backendName(s.context->backend())},
+                                {"renderer", f.renderer},
+                                {"size", {s.framebuffer->width(), s.framebuffer->height()}},
+                                {"time", s.commandLine.time},
+                                {"frames", frameMs.size()},
+                                {"depth", depthFormatName(s.framebuffer->depthFormat()) +
+                                              std::string(s.reversedDepth ? "-reversed" : "")},
+                                {"features",
+                                 {{"depth_bounds_test", f.depthBoundsTest},
+                                  {"pipeline_statistics", f.pipelineStatistics},
+                                  {"clip_control", f.clipControl},
+                                  {"khr_debug", f.khrDebug},
+                                  {"depth_clamp", f.depthClamp}}}};
   PassStats total;
   bool haveSamples = true, havePrims = true, haveGpu = true;
-  for (size_t i = 0; i < passes.size(); ++i) {
-    const PassStats& p = passes[i];
-    out << "    {\"name\": \"" << p.name << "\", \"draw_calls\": " << p.drawCalls
-        << ", \"triangles\": " << p.triangles << ", \"samples_passed\": " << jsonNumber(p.samplesPassed)
-        << ", \"primitives_submitted\": " << jsonNumber(p.primitivesSubmitted)
-        << ", \"gpu_ms\": " << jsonNumber(p.gpuMs) << gpuNullReason(p)
-        << ", \"cpu_ms\": " << jsonNumber(p.cpuMs) << "}" << (i + 1 < passes.size() ? "," : "") << "\n";
+  nlohmann::ordered_json passList = nlohmann::ordered_json::array();
+  for (const PassStats& p : passes) {
+    passList.push_back(passJson(p));
     total.drawCalls += p.drawCalls;
     total.triangles += p.triangles;
     haveSamples &= p.samplesPassed.has_value();
@@ -274,25 +279,25 @@ std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
     total.gpuMs.reset();
     total.gpuMsNullReason = "a pass's gpu_ms is null";
   }
+  out["passes"] = passList;
+  nlohmann::ordered_json totalJson = {{"passes", passes.size()}};
+  const nlohmann::ordered_json totalFields = passJson(total);
+  for (const auto& field : totalFields.items())
+    if (field.key() != "name") totalJson[field.key()] = field.value();
+  out["total"] = totalJson;
+  nlohmann::ordered_json counts = nlohmann::ordered_json::object();
+  for (const auto& [name, value] : s.recorder->counts()) counts[name] = value;
+  out["counts"] = counts;
   // The first frame pays for shader compilation (llvmpipe compiles at first draw), so the
   // steady-state figures leave it out when there are more frames.
   const auto steadyBegin = frameMs.size() > 1 ? frameMs.begin() + 1 : frameMs.begin();
   const double mean =
       std::accumulate(steadyBegin, frameMs.end(), 0.0) / static_cast<double>(frameMs.end() - steadyBegin);
-  out << "  ],\n  \"total\": {\"passes\": " << passes.size() << ", \"draw_calls\": " << total.drawCalls
-      << ", \"triangles\": " << total.triangles << ", \"samples_passed\": " << jsonNumber(total.samplesPassed)
-      << ", \"primitives_submitted\": " << jsonNumber(total.primitivesSubmitted)
-      << ", \"gpu_ms\": " << jsonNumber(total.gpuMs) << gpuNullReason(total)
-      << ", \"cpu_ms\": " << jsonNumber(total.cpuMs) << "},\n"
-      << "  \"counts\": {";
-  const auto& counts = s.recorder->counts();
-  for (size_t i = 0; i < counts.size(); ++i)
-    out << (i ? ", " : "") << "\"" << counts[i].first << "\": " << counts[i].second;
-  out << "},\n"
-      << "  \"frame_ms\": {\"first\": " << jsonNumber(frameMs.front()) << ", \"mean\": " << jsonNumber(mean)
-      << ", \"min\": " << jsonNumber(*std::min_element(steadyBegin, frameMs.end()))
-      << ", \"max\": " << jsonNumber(*std::max_element(steadyBegin, frameMs.end())) << "}\n}\n";
-  return out.str();
+  out["frame_ms"] = {{"first", milliseconds(frameMs.front())},
+                     {"mean", milliseconds(mean)},
+                     {"min", milliseconds(*std::min_element(steadyBegin, frameMs.end()))},
+                     {"max", milliseconds(*std::max_element(steadyBegin, frameMs.end()))}};
+  return out.dump(2) + "\n";
 }
 
 std::filesystem::path rawPathBeside(const std::filesystem::path& picture) {

@@ -10,19 +10,17 @@
 #include <sstream>
 #include <string>
 
+#include "../lesson_stats.h"
 #include "gl/image.h"
 
 namespace stencil::testing {
 
 struct LessonRun {
   Image colour, stencil;
-  std::string stats;  // empty unless asked for
+  LessonStats stats;  // empty unless asked for
 
   // A count under "counts" in the --stats JSON; -1 when absent.
-  long long count(const std::string& name) const {
-    const auto at = stats.find("\"" + name + "\": ", stats.find("\"counts\""));
-    return at == std::string::npos ? -1 : std::stoll(stats.substr(at + name.size() + 4));
-  }
+  long long count(const std::string& name) const { return stats.count(name); }
 };
 
 // Each test writes into its own folder: ctest runs the tests of a file in parallel. Returns
@@ -42,13 +40,8 @@ inline std::optional<LessonRun> runLesson(const std::string& binary, const std::
   const int status = std::system(command.c_str());
   if (WIFEXITED(status) && WEXITSTATUS(status) == 77) return std::nullopt;
   EXPECT_EQ(status, 0) << command;
-  LessonRun run{readPng(colour, 4), readPng(dir / (name + "-stencil.raw.png"), 1), ""};
-  if (stats) {
-    std::ifstream in(json);
-    std::stringstream s;
-    s << in.rdbuf();
-    run.stats = s.str();
-  }
+  LessonRun run{readPng(colour, 4), readPng(dir / (name + "-stencil.raw.png"), 1), {}};
+  if (stats) run.stats = LessonStats::read(json);
   return run;
 }
 

@@ -14,10 +14,10 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
-#include <regex>
 #include <string>
 #include <vector>
 
+#include "../lesson_stats.h"
 #include "gl/image.h"
 
 using namespace stencil;
@@ -101,13 +101,7 @@ std::optional<long> samplesPassed(const std::string& args, const std::string& pa
   const int status = pclose(pipe);
   if (noContext(status)) return std::nullopt;
   EXPECT_EQ(status, 0) << command;
-  std::smatch match;
-  const std::regex field("\"name\": \"" + pass + "\"[^}]*\"samples_passed\": ([0-9]+)");
-  if (!std::regex_search(json, match, field)) {
-    ADD_FAILURE() << "no samples_passed for pass " << pass << " in:\n" << json;
-    return std::nullopt;
-  }
-  return std::stol(match[1]);
+  return stencil::testing::LessonStats(json).firstPass(pass, "samples_passed");
 }
 
 }  // namespace

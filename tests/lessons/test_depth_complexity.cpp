@@ -22,12 +22,6 @@ std::optional<LessonRun> run(const std::string& name, const std::string& args, b
   return stencil::testing::runLesson(LESSON_13, name, args, stats);
 }
 
-// The samples_passed of the first pass with this name, from the --stats JSON.
-long long passSamples(const std::string& stats, const std::string& pass) {
-  const auto at = stats.find("{\"name\": \"" + pass + "\"");
-  return std::stoll(stats.substr(stats.find("\"samples_passed\": ", at) + 18));
-}
-
 // The oracle's verdict: every disagreement on an edge of the ray count's picture, and few of those.
 void expectRayCountAgrees(const LessonRun& r, const std::string& what) {
   ASSERT_GT(r.count("oracle_pixels"), 0) << what;
@@ -85,7 +79,7 @@ TEST(DepthComplexity, TheHistogramIsTheStencils) {
   EXPECT_GE(largest, 6);  // the nested cubes alone are six deep
   EXPECT_EQ(r->count("counted_fragments"), fragments);
   // With the depth test off every fragment of the count pass passes its occlusion query.
-  EXPECT_EQ(passSamples(r->stats, "count"), fragments);
+  EXPECT_EQ(r->stats.firstPass("count", "samples_passed"), fragments);
 }
 
 // 300 quads one behind the other: INCR stops at 255, and the picture shows those pixels in the
@@ -110,7 +104,7 @@ TEST(DepthComplexity, PastTwoHundredAndFiftyFive) {
   EXPECT_GT(wrapped, 0u);
   EXPECT_EQ(saturates->count("saturated_pixels"), static_cast<long long>(stopped));
   // The stored counts lose what INCR dropped: fewer than the fragments drawn.
-  EXPECT_LT(saturates->count("counted_fragments"), passSamples(saturates->stats, "count"));
+  EXPECT_LT(saturates->count("counted_fragments"), saturates->stats.firstPass("count", "samples_passed"));
   // Every saturated pixel above the legend band shows the saturated colour.
   const auto cyan = saturatedCountColour();
   std::size_t saturatedAbove = 0, notCyan = 0;
@@ -153,12 +147,8 @@ namespace {
 
 // Every fragment of every light's shadow volumes, as lesson 16 reports it: the samples_passed of
 // all its volume-fill passes (one per light drawn), with --set fill=1.
-long long lessonSixteenFill(const std::string& stats) {
-  long long total = 0;
-  const std::string key = "{\"name\": \"volume-fill\"";
-  for (auto at = stats.find(key); at != std::string::npos; at = stats.find(key, at + 1))
-    total += std::stoll(stats.substr(stats.find("\"samples_passed\": ", at) + 18));
-  return total;
+long long lessonSixteenFill(const stencil::testing::LessonStats& stats) {
+  return stats.passTotal("volume-fill", "samples_passed");
 }
 
 const char* const kMethods[] = {"mcguire", "everitt-kilgard", "lengyel", "zpass"};

@@ -23,9 +23,9 @@ std::optional<LessonRun> run(const std::string& name, const std::string& args, b
 }
 
 // The first pass with this name in the --stats JSON: a number of its.
-long long passField(const std::string& stats, const std::string& pass, const std::string& field) {
-  const auto at = stats.find("{\"name\": \"" + pass + "\"");
-  return std::stoll(stats.substr(stats.find("\"" + field + "\": ", at) + field.size() + 4));
+long long passField(const stencil::testing::LessonStats& stats, const std::string& pass,
+                    const std::string& field) {
+  return stats.firstPass(pass, field);
 }
 
 // The count picture decoded: blends per pixel of each halo, and which object shows.

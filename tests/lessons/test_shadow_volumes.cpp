@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "../lesson_stats.h"
 #include "geometry/shadow_oracle.h"
 #include "gl/image.h"
 
@@ -100,11 +101,7 @@ Tally tally(const Verdicts& v, ShadowedInStencil shadowed, std::vector<bool>* fa
 }
 
 std::uint64_t samplesPassed(const std::string& stats, const std::string& pass) {
-  const std::size_t at = stats.find("\"name\": \"" + pass + "\"");
-  EXPECT_NE(at, std::string::npos) << "no pass " << pass;
-  const std::string key = "\"samples_passed\": ";
-  const std::size_t value = stats.find(key, at);
-  return std::stoull(stats.substr(value + key.size()));
+  return static_cast<std::uint64_t>(stencil::testing::LessonStats(stats).firstPass(pass, "samples_passed"));
 }
 
 auto oddBit = [](std::uint8_t s) { return (s & 1) != 0; };

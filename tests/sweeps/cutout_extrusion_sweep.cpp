@@ -70,12 +70,12 @@ void measure(const fs::path& work, const std::string& settings, int frames, Row&
   run(settings + " --time 1 --oracle " + picture.string() + " 2> " + log.string(), true);
   readOracle(log, row);
   run(settings + " --time 1 --stats --frames " + std::to_string(frames) + " > " + stats.string());
-  const std::string json = readAll(stats);
-  row.frameMs = jsonNumber(json, "\"frame_ms\"", "mean");
-  row.frameMsMin = jsonNumber(json, "\"frame_ms\"", "min");
-  row.triangles = static_cast<long long>(jsonNumber(json, "\"total\"", "triangles"));
-  row.drawCalls = static_cast<long long>(jsonNumber(json, "\"total\"", "draw_calls"));
-  row.countTriangles = static_cast<long long>(jsonNumber(json, "\"name\": \"count\"", "triangles"));
+  const LessonStats json = LessonStats::read(stats);
+  row.frameMs = json.frameMs("mean");
+  row.frameMsMin = json.frameMs("min");
+  row.triangles = json.total("triangles");
+  row.drawCalls = json.total("draw_calls");
+  row.countTriangles = json.firstPass("count", "triangles");
   std::fprintf(stderr,
                "sweep: %-7s %-7s holes %2d slices %3d  %7.3f ms  %7lld tri (count %6lld)  wrong %5lld (%lld "
                "off edges)\n",

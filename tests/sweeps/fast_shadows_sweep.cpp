@@ -67,19 +67,6 @@ long long wrongOffEdges(const fs::path& log) {
   return disagree - onEdges;
 }
 
-// The sum of a field over every pass with this name.
-long long passSum(const std::string& json, const std::string& pass, const std::string& key) {
-  long long total = 0;
-  const std::string name = "{\"name\": \"" + pass + "\"";
-  for (auto at = json.find(name); at != std::string::npos; at = json.find(name, at + 1))
-    total += static_cast<long long>(jsonNumber(json.substr(at), name, key));
-  return total;
-}
-
-long long count(const std::string& json, const std::string& key) {
-  return static_cast<long long>(jsonNumber(json, "\"counts\"", key));
-}
-
 std::string settings(const Row& r) {
   const auto m = std::find(kMethods.begin(), kMethods.end(), r.method) - kMethods.begin();
   char time[16];
@@ -95,12 +82,12 @@ void measureMethod(const fs::path& work, int frames, Row& row) {
   // The counts from one frame at the row's time, with the fill pass; the time from frames
   // without it (they run on past the row's time, 1/60 s apart).
   run(settings(row) + " --set fill=1 --stats > " + stats.string());
-  const std::string json = readAll(stats);
-  row.shadowTriangles = passSum(json, "shadows", "triangles");
-  row.volumeFragments = passSum(json, "shadows", "samples_passed");
-  row.rasterized = passSum(json, "volume-fill", "samples_passed");
+  const LessonStats json = LessonStats::read(stats);
+  row.shadowTriangles = json.passTotal("shadows", "triangles");
+  row.volumeFragments = json.passTotal("shadows", "samples_passed");
+  row.rasterized = json.passTotal("volume-fill", "samples_passed");
   run(settings(row) + " --stats --frames " + std::to_string(frames) + " > " + stats.string());
-  row.frameMsMin = jsonNumber(readAll(stats), "\"frame_ms\"", "min");
+  row.frameMsMin = LessonStats::read(stats).frameMs("min");
   std::fprintf(
       stderr,
       "sweep: %-15s %-13s t %.2f  %8.3f ms  %6lld triangles  %8lld fragments, %8lld rasterized  %lld wrong\n",
@@ -111,11 +98,11 @@ void measureMethod(const fs::path& work, int frames, Row& row) {
 void measureSphere(const fs::path& work, Row& row) {
   const fs::path stats = work / "stats.json";
   run(settings(row) + " --stats > " + stats.string());
-  const std::string json = readAll(stats);
-  row.sphereCase = count(json, "case.sphere");
-  row.sphereSides = count(json, "sides.sphere");
-  row.sphereDarkCap = count(json, "dark_cap.sphere");
-  row.sphereLightCap = count(json, "light_cap.sphere");
+  const LessonStats json = LessonStats::read(stats);
+  row.sphereCase = json.count("case.sphere");
+  row.sphereSides = json.count("sides.sphere");
+  row.sphereDarkCap = json.count("dark_cap.sphere");
+  row.sphereLightCap = json.count("light_cap.sphere");
   std::fprintf(
       stderr, "sweep: sphere %3d slices, case %lld, %-8s sides %5lld dark cap %5lld light cap %5lld\n",
       row.slices, row.sphereCase, row.method.c_str(), row.sphereSides, row.sphereDarkCap, row.sphereLightCap);

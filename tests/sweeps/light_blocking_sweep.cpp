@@ -151,10 +151,10 @@ int main(int argc, char** argv) {
   for (Row& row : rows) {
     const fs::path stats = work / "stats.json";
     run(row.config.settings + " --time 1 --stats --frames " + (quick ? "3" : "61") + " > " + stats.string());
-    const std::string json = readAll(stats);
-    row.frameMs = jsonNumber(json, "\"frame_ms\"", "mean");
-    row.triangles = static_cast<long long>(jsonNumber(json, "\"total\"", "triangles"));
-    row.drawCalls = static_cast<long long>(jsonNumber(json, "\"total\"", "draw_calls"));
+    const LessonStats json = LessonStats::read(stats);
+    row.frameMs = json.frameMs("mean");
+    row.triangles = json.total("triangles");
+    row.drawCalls = json.total("draw_calls");
     std::fprintf(stderr, "sweep: %-12s %7.3f ms  rms %6.2f  wrong px %8.1f\n", row.config.label.c_str(),
                  row.frameMs, row.rms, row.wrongPixels);
   }

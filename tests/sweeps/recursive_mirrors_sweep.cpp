@@ -145,17 +145,17 @@ int main(int argc, char** argv) {
     row.rms = std::sqrt(sum / (3.0 * double(n)));
 
     run(depthArgs(depth) + " --stats --frames " + frames + " > " + stats.string());
-    std::string json = readAll(stats);
-    row.frameMs = jsonNumber(json, "\"frame_ms\"", "mean");
-    row.fastestMs = jsonNumber(json, "\"frame_ms\"", "min");
-    row.renderings = static_cast<long long>(jsonNumber(json, "\"counts\"", "scene_renderings"));
-    row.drawCalls = static_cast<long long>(jsonNumber(json, "\"total\"", "draw_calls"));
-    row.triangles = static_cast<long long>(jsonNumber(json, "\"total\"", "triangles"));
+    LessonStats json = LessonStats::read(stats);
+    row.frameMs = json.frameMs("mean");
+    row.fastestMs = json.frameMs("min");
+    row.renderings = json.count("scene_renderings");
+    row.drawCalls = json.total("draw_calls");
+    row.triangles = json.total("triangles");
     run(depthArgs(depth) + " --set culling=0 --stats --frames " + frames + " > " + stats.string());
-    json = readAll(stats);
-    row.frameMsNoCulling = jsonNumber(json, "\"frame_ms\"", "mean");
-    row.fastestMsNoCulling = jsonNumber(json, "\"frame_ms\"", "min");
-    row.renderingsNoCulling = static_cast<long long>(jsonNumber(json, "\"counts\"", "scene_renderings"));
+    json = LessonStats::read(stats);
+    row.frameMsNoCulling = json.frameMs("mean");
+    row.fastestMsNoCulling = json.frameMs("min");
+    row.renderingsNoCulling = json.count("scene_renderings");
     std::fprintf(stderr,
                  "sweep: depth %d  %3lld renderings %7.2f ms  (no culling %3lld, %7.2f ms)  rms %6.2f\n",
                  depth, row.renderings, row.frameMs, row.renderingsNoCulling, row.frameMsNoCulling, row.rms);

@@ -13,6 +13,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "../lesson_stats.h"
+
+using stencil::testing::LessonStats;
+
 struct SweepCommandLine {
   std::filesystem::path out;   // OUT.csv and OUT.svg are written beside it
   std::filesystem::path work;  // renders go here, one folder per run
@@ -63,13 +67,4 @@ inline std::string readAll(const std::filesystem::path& p) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-// The number after `"key": ` following `after` in the --stats JSON.
-inline double jsonNumber(const std::string& json, const std::string& after, const std::string& key) {
-  const auto from = json.find(after);
-  if (from == std::string::npos) throw std::runtime_error("no " + after + " in the stats");
-  const auto at = json.find("\"" + key + "\": ", from);
-  if (at == std::string::npos) throw std::runtime_error("no " + key + " in the stats");
-  return std::stod(json.substr(at + key.size() + 4));
 }
