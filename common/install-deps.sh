@@ -13,6 +13,7 @@ packages=(
   libglfw3-dev libimgui-dev          # the window and its panel
   libtinyobjloader-dev               # OBJ meshes in scene files
   nlohmann-json3-dev                 # the --stats JSON, written and read
+  python3-matplotlib                 # the sweeps' plots (tests/sweeps/plot_sweeps.py)
   libgtest-dev libbenchmark-dev      # unit tests, micro-benchmarks
   xvfb xauth                         # the window test runs under a virtual display
 )

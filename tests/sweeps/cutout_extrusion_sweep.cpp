@@ -11,9 +11,10 @@
 //
 //   cutout_extrusion_sweep OUT [--quick] [--check]
 //
-// writes OUT.csv and OUT.svg. --quick uses fewer configurations and frames; --check exits 1
-// unless the three methods agree with the ray cast off its edges for every lattice, submit the
-// same count-pass triangles, and the sphere's error falls as its tessellation grows.
+// writes OUT.csv (tests/sweeps/plot_sweeps.py draws its plot). --quick uses fewer
+// configurations and frames; --check exits 1 unless the three methods agree with the ray cast
+// off its edges for every lattice, submit the same count-pass triangles, and the sphere's error
+// falls as its tessellation grows.
 #include <unistd.h>
 
 #include <algorithm>
@@ -83,60 +84,6 @@ void measure(const fs::path& work, const std::string& settings, int frames, Row&
                row.countTriangles, row.wrong, row.wrongOffEdges);
 }
 
-// One scatter panel: x and y of each row, a colour per series, a label per point.
-struct Panel {
-  std::string title, xLabel, yLabel;
-  std::vector<std::string> series;
-  std::vector<std::string> colours;
-  struct Point {
-    double x, y;
-    std::size_t series;
-    std::string label;
-  };
-  std::vector<Point> points;
-};
-
-void writePanel(std::ofstream& out, const Panel& p, double left, double top, double width, double height) {
-  double maxX = 0, maxY = 0;
-  for (const auto& pt : p.points) maxX = std::max(maxX, pt.x), maxY = std::max(maxY, pt.y);
-  maxX = maxX > 0 ? maxX * 1.1 : 1, maxY = maxY > 0 ? maxY * 1.15 : 1;
-  const double bottom = top + height, right = left + width;
-  const auto x = [&](double v) { return left + width * v / maxX; };
-  const auto y = [&](double v) { return bottom - height * v / maxY; };
-  out << "<text x='" << (left + right) / 2 << "' y='" << top - 8
-      << "' text-anchor='middle' font-weight='bold'>" << p.title << "</text>\n"
-      << "<line x1='" << left << "' y1='" << bottom << "' x2='" << right << "' y2='" << bottom
-      << "' stroke='black'/>\n"
-      << "<line x1='" << left << "' y1='" << bottom << "' x2='" << left << "' y2='" << top
-      << "' stroke='black'/>\n"
-      << "<text x='" << (left + right) / 2 << "' y='" << bottom + 32 << "' text-anchor='middle'>" << p.xLabel
-      << "</text>\n<text x='" << left - 45 << "' y='" << (top + bottom) / 2 << "' transform='rotate(-90 "
-      << left - 45 << " " << (top + bottom) / 2 << ")' text-anchor='middle'>" << p.yLabel << "</text>\n";
-  for (int i = 0; i <= 4; ++i) {
-    const double vx = maxX * i / 4, vy = maxY * i / 4;
-    out << "<text x='" << x(vx) << "' y='" << bottom + 14 << "' text-anchor='middle'>"
-        << (maxX >= 100 ? std::to_string(static_cast<long long>(std::round(vx)))
-                        : std::to_string(std::round(vx * 10) / 10).substr(0, 4))
-        << "</text>\n<text x='" << left - 5 << "' y='" << y(vy) + 4 << "' text-anchor='end'>"
-        << (maxY >= 100 ? std::to_string(static_cast<long long>(std::round(vy)))
-                        : std::to_string(std::round(vy * 10) / 10).substr(0, 4))
-        << "</text>\n";
-  }
-  for (std::size_t s = 0; s < p.series.size(); ++s) {
-    std::string path;
-    for (const auto& pt : p.points)
-      if (pt.series == s)
-        path += (path.empty() ? "M" : " L") + std::to_string(x(pt.x)) + " " + std::to_string(y(pt.y));
-    out << "<path d='" << path << "' fill='none' stroke='" << p.colours[s] << "'/>\n"
-        << "<text x='" << left + 10 << "' y='" << top + 14.0 * static_cast<double>(s + 1)
-        << "' text-anchor='start' fill='" << p.colours[s] << "'>" << p.series[s] << "</text>\n";
-  }
-  for (const auto& pt : p.points)
-    out << "<circle cx='" << x(pt.x) << "' cy='" << y(pt.y) << "' r='3' fill='" << p.colours[pt.series]
-        << "'/>\n<text x='" << x(pt.x) + 5 << "' y='" << y(pt.y) - 5 << "' font-size='9'>" << pt.label
-        << "</text>\n";
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -175,36 +122,8 @@ int main(int argc, char** argv) {
         << r.frameMsMin << "," << r.triangles << "," << r.countTriangles << "," << r.drawCalls << ","
         << r.wrong << "," << r.wrongOffEdges << "," << r.shadowed << "\n";
 
-  Panel methodsPanel{"Extrusion of the lattice (" + kSize + ")",
-                     "count-pass triangles",
-                     "fastest frame (ms)",
-                     {"cpu", "matrix", "gpu"},
-                     {"#d04020", "#208040", "#3060c0"},
-                     {}};
-  Panel spherePanel{"Flattened sphere against the true sphere (labels: slices)",
-                    "fastest frame (ms)",
-                    "wrong pixels",
-                    {"flatten"},
-                    {"#804090"},
-                    {}};
-  for (const Row& r : rows) {
-    if (r.sweep == "methods") {
-      const auto s =
-          static_cast<std::size_t>(std::find(methods.begin(), methods.end(), r.method) - methods.begin());
-      methodsPanel.points.push_back({static_cast<double>(r.countTriangles), r.frameMsMin, s,
-                                     s == 0 ? std::to_string(r.holes) + "x" + std::to_string(r.holes) : ""});
-    } else {
-      spherePanel.points.push_back({r.frameMsMin, static_cast<double>(r.wrong), 0, std::to_string(r.slices)});
-    }
-  }
-  std::ofstream svg(out.string() + ".svg");
-  svg << "<svg xmlns='http://www.w3.org/2000/svg' width='1000' height='380' font-family='sans-serif' "
-         "font-size='11'>\n<rect width='100%' height='100%' fill='white'/>\n";
-  writePanel(svg, methodsPanel, 80, 40, 360, 270);
-  writePanel(svg, spherePanel, 590, 40, 360, 270);
-  svg << "</svg>\n";
   fs::remove_all(work);
-  std::cerr << "sweep: wrote " << out.string() << ".csv and .svg\n";
+  std::cerr << "sweep: wrote " << out.string() << ".csv\n";
 
   if (!check) return 0;
   bool ok = true;

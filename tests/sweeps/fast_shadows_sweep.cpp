@@ -15,11 +15,10 @@
 //
 //   fast_shadows_sweep OUT [--quick] [--check]
 //
-// writes OUT.csv and OUT.svg. --check exits 1 unless the three robust methods agree with the ray
-// cast off its edges everywhere (up to two grazing pixels), z-pass alone does not with the eye in
-// a shadow, and the sphere's
-// triangles grow as the paper says (linearly: at most 1.5 times the slice ratio; quadratically:
-// at least half its square).
+// writes OUT.csv (tests/sweeps/plot_sweeps.py draws its plot). --check exits 1 unless the three
+// robust methods agree with the ray cast off its edges everywhere (up to two grazing pixels),
+// z-pass alone does not with the eye in a shadow, and the sphere's triangles grow as the paper
+// says (linearly: at most 1.5 times the slice ratio; quadratically: at least half its square).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -108,36 +107,6 @@ void measureSphere(const fs::path& work, Row& row) {
       row.slices, row.sphereCase, row.method.c_str(), row.sphereSides, row.sphereDarkCap, row.sphereLightCap);
 }
 
-// A bar chart: one group per label, one bar per series.
-void writeBars(std::ofstream& out, const std::string& title, const std::vector<std::string>& groups,
-               const std::vector<std::string>& series, const std::vector<std::vector<double>>& values,
-               double left, double top, double width, double height) {
-  const std::string colours[] = {"#d04020", "#208040", "#3060c0", "#808080"};
-  double most = 0;
-  for (const auto& g : values)
-    for (double v : g) most = std::max(most, v);
-  most = most > 0 ? most * 1.35 : 1;  // room for the legend
-  const double bottom = top + height, groupWidth = width / static_cast<double>(groups.size());
-  const double barWidth = groupWidth * 0.8 / static_cast<double>(series.size());
-  out << "<text x='" << left + width / 2 << "' y='" << top - 8 << "' text-anchor='middle' font-weight='bold'>"
-      << title << "</text>\n<line x1='" << left << "' y1='" << bottom << "' x2='" << left + width << "' y2='"
-      << bottom << "' stroke='black'/>\n<text x='" << left - 5 << "' y='" << top + 4 << "' text-anchor='end'>"
-      << static_cast<long long>(most) << "</text>\n";
-  for (std::size_t g = 0; g < groups.size(); ++g) {
-    const double x0 = left + groupWidth * (static_cast<double>(g) + 0.1);
-    for (std::size_t s = 0; s < series.size(); ++s) {
-      const double h = height * values[g][s] / most;
-      out << "<rect x='" << x0 + barWidth * static_cast<double>(s) << "' y='" << bottom - h << "' width='"
-          << barWidth * 0.9 << "' height='" << h << "' fill='" << colours[s % 4] << "'/>\n";
-    }
-    out << "<text x='" << x0 + groupWidth * 0.4 << "' y='" << bottom + 14 << "' text-anchor='middle'>"
-        << groups[g] << "</text>\n";
-  }
-  for (std::size_t s = 0; s < series.size(); ++s)
-    out << "<text x='" << left + width << "' y='" << top + 14.0 * static_cast<double>(s + 1)
-        << "' text-anchor='end' fill='" << colours[s % 4] << "'>" << series[s] << "</text>\n";
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -176,39 +145,8 @@ int main(int argc, char** argv) {
         << r.wrongOffEdges << "," << r.sphereCase << "," << r.sphereSides << "," << r.sphereDarkCap << ","
         << r.sphereLightCap << "\n";
 
-  // Per view, the methods' fastest frame and triangles (averaged over the moments), and the
-  // sphere's triangles per case at the most slices.
-  std::vector<std::vector<double>> ms(kViews.size(), std::vector<double>(kMethods.size()));
-  auto tris = ms, wrong = ms, fill = ms;
-  for (const Row& r : rows) {
-    if (r.sweep != "methods") continue;
-    const auto v = static_cast<std::size_t>(std::find(kViews.begin(), kViews.end(), r.view) - kViews.begin());
-    const auto m =
-        static_cast<std::size_t>(std::find(kMethods.begin(), kMethods.end(), r.method) - kMethods.begin());
-    ms[v][m] += r.frameMsMin / static_cast<double>(times.size());
-    tris[v][m] += static_cast<double>(r.shadowTriangles) / static_cast<double>(times.size());
-    wrong[v][m] += static_cast<double>(r.wrongOffEdges) / static_cast<double>(times.size());
-    fill[v][m] += static_cast<double>(r.rasterized) / static_cast<double>(times.size());
-  }
-  std::vector<std::vector<double>> sphere(kViews.size(), std::vector<double>(2));
-  for (const Row& r : rows)
-    if (r.sweep == "tessellation" && r.slices == slices.back()) {
-      const auto v =
-          static_cast<std::size_t>(std::find(kViews.begin(), kViews.end(), r.view) - kViews.begin());
-      sphere[v][r.method == "mcguire" ? 0 : 1] = static_cast<double>(r.sphere());
-    }
-  std::ofstream svg(out.string() + ".svg");
-  svg << "<svg xmlns='http://www.w3.org/2000/svg' width='920' height='660' font-family='sans-serif' "
-         "font-size='11'>\n<rect width='100%' height='100%' fill='white'/>\n";
-  writeBars(svg, "fastest frame (ms, " + kSize + ")", kViews, kMethods, ms, 50, 40, 250, 240);
-  writeBars(svg, "shadow-pass triangles", kViews, kMethods, tris, 350, 40, 250, 240);
-  writeBars(svg, "volume fragments rasterized", kViews, kMethods, fill, 650, 40, 250, 240);
-  writeBars(svg, "pixels wrong off the ray cast's edges", kViews, kMethods, wrong, 50, 370, 250, 240);
-  writeBars(svg, "sphere volume triangles, " + std::to_string(slices.back()) + " slices (case 1, 2, 3)",
-            kViews, {"mcguire", "lengyel"}, sphere, 350, 370, 250, 240);
-  svg << "</svg>\n";
   fs::remove_all(work);
-  std::cerr << "sweep: wrote " << out.string() << ".csv and .svg\n";
+  std::cerr << "sweep: wrote " << out.string() << ".csv\n";
 
   if (!check) return 0;
   bool ok = true;

@@ -7,8 +7,8 @@
 //
 //   light_blocking_sweep OUT [--quick] [--check]
 //
-// writes OUT.csv and OUT.svg. --quick renders fewer frames; --check
-// exits 1 unless blocking matches the reference (off the shadow's edges) and every
+// writes OUT.csv (tests/sweeps/plot_sweeps.py draws its plot). --quick renders fewer frames;
+// --check exits 1 unless blocking matches the reference (off the shadow's edges) and every
 // blended shadow is worse.
 #include <unistd.h>
 
@@ -75,37 +75,6 @@ Reference referenceAt(const fs::path& dir, double time) {
   return r;
 }
 
-void writeSvg(const fs::path& path, const std::vector<Row>& rows) {
-  const double w = 560, h = 360, left = 60, bottom = 300, top = 20, right = 540;
-  double maxMs = 0, maxRms = 0;
-  for (const Row& r : rows) maxMs = std::max(maxMs, r.frameMs), maxRms = std::max(maxRms, r.rms);
-  maxMs *= 1.15, maxRms *= 1.15;
-  const auto x = [&](double ms) { return left + (right - left) * ms / maxMs; };
-  const auto y = [&](double e) { return bottom - (bottom - top) * e / maxRms; };
-  std::ofstream out(path);
-  out << "<svg xmlns='http://www.w3.org/2000/svg' width='" << w << "' height='" << h
-      << "' font-family='sans-serif' font-size='11'>\n<rect width='100%' height='100%' fill='white'/>\n"
-      << "<line x1='" << left << "' y1='" << bottom << "' x2='" << right << "' y2='" << bottom
-      << "' stroke='black'/>\n"
-      << "<line x1='" << left << "' y1='" << bottom << "' x2='" << left << "' y2='" << top
-      << "' stroke='black'/>\n"
-      << "<text x='" << (left + right) / 2 << "' y='" << bottom + 35
-      << "' text-anchor='middle'>time per frame (ms, " << kSize << ")</text>\n"
-      << "<text x='15' y='" << (top + bottom) / 2 << "' transform='rotate(-90 15 " << (top + bottom) / 2
-      << ")' text-anchor='middle'>RMS error on the ground (of 255)</text>\n";
-  for (int i = 0; i <= 4; ++i) {
-    out << "<text x='" << x(maxMs * i / 4) << "' y='" << bottom + 15 << "' text-anchor='middle'>"
-        << std::round(maxMs * i / 4 * 10) / 10 << "</text>\n";
-    out << "<text x='" << left - 5 << "' y='" << y(maxRms * i / 4) + 4 << "' text-anchor='end'>"
-        << std::round(maxRms * i / 4 * 10) / 10 << "</text>\n";
-  }
-  for (const Row& r : rows)
-    out << "<circle cx='" << x(r.frameMs) << "' cy='" << y(r.rms) << "' r='4' fill='"
-        << (r.config.block ? "#d04020" : "#3060c0") << "'/>\n<text x='" << x(r.frameMs) + 6 << "' y='"
-        << y(r.rms) + 4 << "'>" << r.config.label << "</text>\n";
-  out << "</svg>\n";
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -165,9 +134,8 @@ int main(int argc, char** argv) {
     csv << (r.config.block ? "block" : "dampen") << "," << r.config.darkness << "," << r.frameMs << ","
         << r.rms << "," << r.maxError << "," << r.wrongPixels << "," << r.triangles << "," << r.drawCalls
         << "\n";
-  writeSvg(out.string() + ".svg", rows);
   fs::remove_all(work);
-  std::cerr << "sweep: wrote " << out.string() << ".csv and .svg\n";
+  std::cerr << "sweep: wrote " << out.string() << ".csv\n";
 
   if (!check) return 0;
   // Blocking differs from the reference only on the shadow's edge pixels; each blend is

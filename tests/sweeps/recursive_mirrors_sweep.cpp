@@ -7,9 +7,10 @@
 //
 //   recursive_mirrors_sweep OUT [--quick] [--check]
 //
-// writes OUT.csv and OUT.svg. --quick renders fewer frames per timing; --check exits 1
-// unless the counts are 1 + r with culling and 1 + 2r without, and the error falls with
-// depth (never rising by more than rounding) to under a quarter of depth 0's.
+// writes OUT.csv (tests/sweeps/plot_sweeps.py draws its plot). --quick renders fewer frames
+// per timing; --check exits 1 unless the counts are 1 + r with culling and 1 + 2r without, and
+// the error falls with depth (never rising by more than rounding) to under a quarter of
+// depth 0's.
 #include <unistd.h>
 
 #include <algorithm>
@@ -49,60 +50,6 @@ void run(const std::string& args) {
 
 std::string depthArgs(int depth) {
   return "--variant hall --time 1 --set depth=" + std::to_string(depth);
-}
-
-void writeSvg(const fs::path& path, const std::vector<Row>& rows) {
-  const double w = 600, h = 360, left = 60, right = 530, top = 20, bottom = 300;
-  double maxMs = 0, maxRms = 0;
-  for (const Row& r : rows)
-    maxMs = std::max({maxMs, r.frameMs, r.frameMsNoCulling}), maxRms = std::max(maxRms, r.rms);
-  maxMs *= 1.15, maxRms *= 1.15;
-  const auto x = [&](double depth) { return left + (right - left) * depth / kMaxDepth; };
-  const auto yMs = [&](double ms) { return bottom - (bottom - top) * ms / maxMs; };
-  const auto yRms = [&](double e) { return bottom - (bottom - top) * e / maxRms; };
-  std::ofstream out(path);
-  out << "<svg xmlns='http://www.w3.org/2000/svg' width='" << w << "' height='" << h
-      << "' font-family='sans-serif' font-size='11'>\n<rect width='100%' height='100%' fill='white'/>\n"
-      << "<line x1='" << left << "' y1='" << bottom << "' x2='" << right << "' y2='" << bottom
-      << "' stroke='black'/>\n"
-      << "<line x1='" << left << "' y1='" << bottom << "' x2='" << left << "' y2='" << top
-      << "' stroke='#d04020'/>\n"
-      << "<line x1='" << right << "' y1='" << bottom << "' x2='" << right << "' y2='" << top
-      << "' stroke='#3060c0'/>\n"
-      << "<text x='" << (left + right) / 2 << "' y='" << bottom + 35
-      << "' text-anchor='middle'>recursion depth (bounces), hall of mirrors</text>\n"
-      << "<text x='15' y='" << (top + bottom) / 2 << "' transform='rotate(-90 15 " << (top + bottom) / 2
-      << ")' text-anchor='middle' fill='#d04020'>RMS error over the mirror (of 255)</text>\n"
-      << "<text x='" << w - 15 << "' y='" << (top + bottom) / 2 << "' transform='rotate(90 " << w - 15 << " "
-      << (top + bottom) / 2 << ")' text-anchor='middle' fill='#3060c0'>fastest frame of the run (ms, "
-      << kSize << ")</text>\n";
-  for (int d = 0; d <= kMaxDepth; ++d)
-    out << "<text x='" << x(d) << "' y='" << bottom + 15 << "' text-anchor='middle'>" << d << "</text>\n";
-  for (int i = 0; i <= 4; ++i) {
-    out << "<text x='" << left - 5 << "' y='" << yRms(maxRms * i / 4) + 4 << "' text-anchor='end'>"
-        << std::round(maxRms * i / 4 * 10) / 10 << "</text>\n";
-    out << "<text x='" << right + 5 << "' y='" << yMs(maxMs * i / 4) + 4 << "'>"
-        << std::round(maxMs * i / 4 * 10) / 10 << "</text>\n";
-  }
-  const auto polyline = [&](auto y, auto value, const char* colour, const char* dash) {
-    out << "<polyline fill='none' stroke='" << colour << "'"
-        << (*dash ? std::string(" stroke-dasharray='") + dash + "'" : "") << " points='";
-    for (std::size_t i = 0; i < rows.size(); ++i)
-      out << (i ? " " : "") << x(rows[i].depth) << "," << y(value(rows[i]));
-    out << "'/>\n";
-    for (const Row& r : rows)
-      out << "<circle cx='" << x(r.depth) << "' cy='" << y(value(r)) << "' r='3' fill='" << colour << "'/>\n";
-  };
-  polyline(
-      yRms, [](const Row& r) { return r.rms; }, "#d04020", "");
-  polyline(
-      yMs, [](const Row& r) { return r.frameMs; }, "#3060c0", "");
-  polyline(
-      yMs, [](const Row& r) { return r.frameMsNoCulling; }, "#3060c0", "4 3");
-  out << "<text x='" << left + 10 << "' y='" << top + 10 << "' fill='#d04020'>error</text>\n"
-      << "<text x='" << left + 10 << "' y='" << top + 24
-      << "' fill='#3060c0'>fastest frame, culling on (solid) and off (dashed)</text>\n"
-      << "</svg>\n";
 }
 
 }  // namespace
@@ -169,9 +116,8 @@ int main(int argc, char** argv) {
     csv << r.depth << "," << r.renderings << "," << r.frameMs << "," << r.fastestMs << ","
         << r.renderingsNoCulling << "," << r.frameMsNoCulling << "," << r.fastestMsNoCulling << "," << r.rms
         << "," << r.maxError << "," << r.wrongPixels << "," << r.drawCalls << "," << r.triangles << "\n";
-  writeSvg(out.string() + ".svg", rows);
   fs::remove_all(work);
-  std::cerr << "sweep: wrote " << out.string() << ".csv and .svg\n";
+  std::cerr << "sweep: wrote " << out.string() << ".csv\n";
 
   if (!check) return 0;
   bool ok = true;

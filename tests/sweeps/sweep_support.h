@@ -18,7 +18,7 @@
 using stencil::testing::LessonStats;
 
 struct SweepCommandLine {
-  std::filesystem::path out;   // OUT.csv and OUT.svg are written beside it
+  std::filesystem::path out;   // OUT.csv is written beside it
   std::filesystem::path work;  // renders go here, one folder per run
   bool quick = false;          // fewer frames and points, for ctest
   bool check = false;          // exit 1 unless the page's claim holds
@@ -28,7 +28,7 @@ struct SweepCommandLine {
 inline std::optional<SweepCommandLine> parseSweepCommandLine(const std::string& name, int argc, char** argv,
                                                              int& exitCode) {
   if (argc < 2 || std::string(argv[1]) == "--help") {
-    std::cout << "usage: " << name << " OUT [--quick] [--check]   (writes OUT.csv and OUT.svg)\n";
+    std::cout << "usage: " << name << " OUT [--quick] [--check]   (writes OUT.csv)\n";
     exitCode = argc < 2 ? 2 : 0;
     return std::nullopt;
   }

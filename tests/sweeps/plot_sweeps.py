@@ -1,0 +1,378 @@
+#!/usr/bin/python3
+"""Draws a speed-against-error sweep's plot from the CSV the sweep wrote.
+
+    plot_sweeps.py SWEEP IN.csv OUT.svg
+
+SWEEP names the sweep (its lesson): 03-recursive-mirrors, 05-light-blocking,
+09-cutout-extrusion or 16-fast-robust-shadows; IN.csv is what tests/sweeps/<sweep>_sweep
+wrote; OUT.svg is replaced only once the plot is drawn. A missing or malformed CSV, an unknown
+sweep or a bad command line gets one line on stderr and exit 2.
+
+Uses matplotlib (Debian's python3-matplotlib). Text stays text in the SVG (svg.fonttype
+'none') and the file is the same for the same CSV (fixed ids, no date).
+"""
+
+import csv
+import math
+import os
+import sys
+import tempfile
+
+PROGRAM = "plot_sweeps.py"
+SIZE = "640x480"  # every sweep renders at this size (tests/sweeps/*_sweep.cpp, kSize)
+
+
+class BadInput(Exception):
+    """Anything wrong with the command line or the CSV: reported as one line, exit 2."""
+
+
+def read_rows(path, numeric, text=()):
+    """The CSV's rows as dicts: the `numeric` columns as floats, the `text` columns as strings.
+    Raises BadInput naming the file and what is wrong (missing, no header, a column missing,
+    a value that is not a finite number, no rows)."""
+    try:
+        with open(path, newline="", encoding="utf-8") as f:
+            reader = csv.DictReader(f)
+            header = reader.fieldnames or []
+            missing = [c for c in list(text) + list(numeric) if c not in header]
+            if not header:
+                raise BadInput(f"{path}: empty, no header line")
+            if missing:
+                raise BadInput(f"{path}: no column '{missing[0]}' in the header")
+            rows = []
+            for line, raw in enumerate(reader, start=2):
+                row = {}
+                for c in text:
+                    if raw[c] is None or raw[c] == "":
+                        raise BadInput(f"{path}:{line}: empty '{c}'")
+                    row[c] = raw[c]
+                for c in numeric:
+                    try:
+                        v = float(raw[c])
+                    except (TypeError, ValueError):
+                        raise BadInput(f"{path}:{line}: '{c}' is not a number: {raw[c]!r}") from None
+                    if not math.isfinite(v):
+                        raise BadInput(f"{path}:{line}: '{c}' is not finite: {raw[c]!r}")
+                    row[c] = v
+                rows.append(row)
+    except OSError as e:
+        raise BadInput(f"{path}: cannot read: {e.strerror or e}") from None
+    except (UnicodeDecodeError, csv.Error) as e:
+        raise BadInput(f"{path}: not a CSV file: {e}") from None
+    if not rows:
+        raise BadInput(f"{path}: no rows after the header")
+    return rows
+
+
+def select(rows, path, what, **match):
+    """The rows whose text columns equal `match`; BadInput if there are none."""
+    picked = [r for r in rows if all(r[k] == v for k, v in match.items())]
+    if not picked:
+        wanted = ", ".join(f"{k}={v}" for k, v in match.items())
+        raise BadInput(f"{path}: no {what} rows ({wanted})")
+    return picked
+
+
+def pyplot():
+    """matplotlib.pyplot, set up for small SVGs that are the same for the same CSV. Imported
+    only once the CSV has been read: a bad one is reported without waiting for matplotlib."""
+    try:
+        import matplotlib
+    except ImportError:
+        raise BadInput(f"matplotlib is missing for {sys.executable} (Debian: apt-get install python3-matplotlib)")
+    matplotlib.use("Agg")
+    matplotlib.rcParams.update({"svg.fonttype": "none", "svg.hashsalt": "stencil-sweeps", "font.size": 9,
+                                "font.family": "sans-serif", "font.sans-serif": ["DejaVu Sans"]})
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def plain_log(axis):
+    """Log-axis ticks at 1, 2 and 5 per decade, written as plain numbers (20, not 2x10^1)."""
+    from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+
+    axis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
+    axis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+    axis.set_minor_formatter(NullFormatter())
+
+
+def plain_symlog(axis, top):
+    """Symlog-axis ticks at 0 and each power of ten up to `top`, written as plain numbers."""
+    from matplotlib.ticker import FixedLocator, FuncFormatter, NullLocator
+
+    axis.set_major_locator(FixedLocator([0] + [10.0**k for k in range(0, int(math.log10(top)) + 1)]))
+    axis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:.0f}"))
+    axis.set_minor_locator(NullLocator())
+
+
+def label_points(ax, xs, ys, labels, dx=4, dy=3):
+    for x, y, text in zip(xs, ys, labels):
+        ax.annotate(text, (x, y), xytext=(dx, dy), textcoords="offset points", fontsize=8)
+
+
+# Lesson 03: error and time against the recursion depth of the hall of mirrors.
+def plot_recursive_mirrors(path):
+    rows = read_rows(path, ["depth", "scene_renderings", "fastest_frame_ms", "scene_renderings_no_culling",
+                            "fastest_frame_ms_no_culling", "rms_error"])
+    rows.sort(key=lambda r: r["depth"])
+    depth = [r["depth"] for r in rows]
+    plt = pyplot()
+    fig, (err, ms) = plt.subplots(1, 2, figsize=(9.5, 3.8), layout="constrained")
+
+    # The error roughly halves per bounce: a log axis shows that as a straight fall.
+    if min(r["rms_error"] for r in rows) <= 0:
+        raise BadInput(f"{path}: an RMS error of 0 or less cannot go on the log axis")
+    err.plot(depth, [r["rms_error"] for r in rows], "o-", color="C3")
+    err.set_yscale("log")
+    plain_log(err.yaxis)
+    err.set_xlabel("recursion depth (bounces)")
+    err.set_ylabel("RMS error against 16 bounces (of 255)")
+    err.set_title("Error over the mirror")
+    err.grid(True, alpha=0.3)
+
+    on = [r["fastest_frame_ms"] for r in rows]
+    off = [r["fastest_frame_ms_no_culling"] for r in rows]
+    ms.plot(depth, on, "o-", color="C0", label="culling on")
+    ms.plot(depth, off, "s--", color="C0", alpha=0.6, label="culling off")
+    label_points(ms, depth, on, [f"{r['scene_renderings']:.0f}" for r in rows], dx=-4, dy=-11)
+    label_points(ms, depth, off, [f"{r['scene_renderings_no_culling']:.0f}" for r in rows], dx=-4, dy=5)
+    ms.set_ylim(0, max(on + off) * 1.15)
+    ms.set_xlabel("recursion depth (bounces)")
+    ms.set_ylabel(f"fastest frame (ms, {SIZE}, llvmpipe)")
+    ms.set_title("Time (labels: scene renderings)")
+    ms.grid(True, alpha=0.3)
+    ms.legend(loc="lower right")
+    for ax in (err, ms):
+        ax.set_xticks(depth)
+    return fig
+
+
+# Lesson 05: every blended shadow's darkness and the light-blocking shadow, time against error.
+def plot_light_blocking(path):
+    rows = read_rows(path, ["darkness", "frame_ms", "rms_error"], text=["method"])
+    block = select(rows, path, "blocking", method="block")
+    dampen = sorted(select(rows, path, "blended", method="dampen"), key=lambda r: r["darkness"])
+    if min(r["rms_error"] for r in rows) <= 0:
+        raise BadInput(f"{path}: an RMS error of 0 or less cannot go on the log axis")
+    plt = pyplot()
+    fig, ax = plt.subplots(figsize=(6.4, 4.2), layout="constrained")
+    ax.plot([r["frame_ms"] for r in dampen], [r["rms_error"] for r in dampen], "o", color="C0",
+            label="dampen (blended), darkness in tenths")
+    label_points(ax, [r["frame_ms"] for r in dampen], [r["rms_error"] for r in dampen],
+                 [f"{r['darkness']:.0f}/10" for r in dampen])
+    ax.plot([r["frame_ms"] for r in block], [r["rms_error"] for r in block], "D", color="C3",
+            label="block (light blocking)")
+    # The error spans two decades, from the blocked shadow's edge pixels to the lightest blend.
+    ax.set_yscale("log")
+    plain_log(ax.yaxis)
+    ax.set_xlim(0, max(r["frame_ms"] for r in rows) * 1.2)
+    ax.set_xlabel(f"time per frame (ms, mean, {SIZE}, llvmpipe)")
+    ax.set_ylabel("RMS error on the ground (of 255)")
+    ax.set_title("Blended against light-blocking shadows")
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="lower left")
+    return fig
+
+
+# Lesson 09: the three extrusions over lattices of more holes; the flattened sphere's error
+# and cost as its slices grow.
+def plot_cutout_extrusion(path):
+    rows = read_rows(path, ["holes", "slices", "frame_ms_min", "triangles", "count_triangles", "wrong_pixels",
+                            "wrong_off_edges"], text=["sweep", "method"])
+    methods = [("cpu", "CPU, rebuilt each frame"), ("matrix", "one projective matrix"),
+               ("gpu", "GPU, doubled vertices")]
+    plt = pyplot()
+    fig, (lat, err, ms) = plt.subplots(1, 3, figsize=(13, 4.2), layout="constrained")
+    for i, (method, name) in enumerate(methods):
+        rs = sorted(select(rows, path, "lattice", sweep="methods", method=method), key=lambda r: r["holes"])
+        xs, ys = [r["count_triangles"] for r in rs], [r["frame_ms_min"] for r in rs]
+        lat.plot(xs, ys, "os^"[i] + "-", color=f"C{i}", label=name, alpha=0.85)
+        if i == 0:
+            label_points(lat, xs, ys, [f"{r['holes']:.0f}×{r['holes']:.0f}" for r in rs], dx=-12, dy=8)
+    # 96 to 4656 triangles: nearly two decades.
+    lat.set_xscale("log")
+    lat.set_yscale("log")
+    plain_log(lat.xaxis)
+    plain_log(lat.yaxis)
+    lat.set_xlabel("count-pass triangles (labels: holes in the lattice)")
+    lat.set_ylabel(f"fastest frame (ms, {SIZE}, llvmpipe)")
+    lat.margins(x=0.08, y=0.12)
+    lat.set_title("Extrusion of the lattice")
+    lat.grid(True, alpha=0.3)
+    lat.legend(loc="upper left")
+
+    rs = sorted(select(rows, path, "sphere", sweep="sphere"), key=lambda r: r["slices"])
+    if min(r["slices"] for r in rs) <= 0 or min(r["frame_ms_min"] for r in rs) <= 0:
+        raise BadInput(f"{path}: a sphere row with no slices or no time cannot go on the log axes")
+    slices = [r["slices"] for r in rs]
+    err.plot(slices, [r["wrong_pixels"] for r in rs], "o-", color="C4", label="all wrong pixels")
+    err.plot(slices, [r["wrong_off_edges"] for r in rs], "s--", color="C7", label="wrong off the ray cast's edges")
+    # The inscribed sphere's shadow falls short by about 1/slices²: the guide goes through the
+    # coarsest sphere's error.
+    s0, e0 = slices[0], rs[0]["wrong_pixels"]
+    err.plot(slices, [e0 * (s0 / s) ** 2 for s in slices], ":", color="black", linewidth=1,
+             label=f"{e0:.0f} × ({s0:.0f} / slices)²")
+    # The error falls from thousands of pixels to none: linear below 1 so that 0 has a place.
+    err.set_xscale("log")
+    err.set_yscale("symlog", linthresh=1)
+    top = 10 ** math.ceil(math.log10(max(max(r["wrong_pixels"] for r in rs), 1) * 1.5))
+    err.set_ylim(0, top)
+    plain_symlog(err.yaxis, top)
+    plain_log(err.xaxis)
+    err.set_xlabel("sphere slices")
+    err.set_ylabel("pixels against the true sphere's shadow")
+    err.set_title("Flattened sphere: error")
+    err.grid(True, alpha=0.3)
+    err.legend(loc="lower left")
+
+    ms.plot(slices, [r["frame_ms_min"] for r in rs], "o-", color="C4")
+    label_points(ms, slices, [r["frame_ms_min"] for r in rs], [f"{r['triangles']:.0f}" for r in rs],
+                 dx=-14, dy=6)
+    ms.set_xscale("log")
+    ms.set_yscale("log")
+    plain_log(ms.xaxis)
+    plain_log(ms.yaxis)
+    ms.set_xlabel("sphere slices")
+    ms.set_ylabel(f"fastest frame (ms, {SIZE}, llvmpipe)")
+    ms.margins(x=0.08, y=0.12)
+    ms.set_title("Flattened sphere: time (labels: all triangles)")
+    ms.grid(True, alpha=0.3)
+    return fig
+
+
+# Lesson 16: the four methods along the camera path; the sphere's triangles as slices grow.
+def plot_fast_shadows(path):
+    rows = read_rows(path, ["time", "slices", "frame_ms_min", "shadow_triangles", "volume_fragments_rasterized",
+                            "wrong_off_edges", "sphere_case", "sphere_sides", "sphere_dark_cap",
+                            "sphere_light_cap"], text=["sweep", "method", "view"])
+    methods = [("mcguire", "McGuire et al."), ("everitt-kilgard", "Everitt-Kilgard"), ("lengyel", "Lengyel"),
+               ("zpass", "z-pass only")]
+    views = ["system", "eye-in-shadow", "looking-up"]
+    from matplotlib.ticker import FuncFormatter, NullFormatter
+
+    plt = pyplot()
+    fig, axes = plt.subplots(2, 3, figsize=(12, 7.6), layout="constrained")
+    width = 0.8 / len(methods)
+
+    # One bar per method in each view: the mean over the moments of the path, and (for the time)
+    # whiskers from the fastest to the slowest moment, which is the noise between moments.
+    def bars(ax, column, title, ylabel, scale=1.0, worst=False, whiskers=False):
+        for m, (method, name) in enumerate(methods):
+            means, lows, highs = [], [], []
+            for view in views:
+                vs = [r[column] * scale for r in select(rows, path, "method", sweep="methods", view=view,
+                                                       method=method)]
+                means.append(max(vs) if worst else sum(vs) / len(vs))
+                lows.append(means[-1] - min(vs))
+                highs.append(max(vs) - means[-1])
+            xs = [v + (m - (len(methods) - 1) / 2) * width for v in range(len(views))]
+            ax.bar(xs, means, width * 0.9, color=f"C{m}", label=name,
+                   yerr=[lows, highs] if whiskers else None, capsize=2, error_kw={"elinewidth": 0.8})
+        ax.set_xticks(range(len(views)), views)
+        ax.set_title(title)
+        ax.set_ylabel(ylabel)
+        ax.grid(True, axis="y", alpha=0.3)
+
+    bars(axes[0][0], "frame_ms_min", "Fastest frame, mean of the moments",
+         f"ms ({SIZE}, llvmpipe; bars: range)", whiskers=True)
+    bars(axes[0][1], "shadow_triangles", "Shadow-pass triangles", "triangles per frame, mean of the moments")
+    bars(axes[0][2], "volume_fragments_rasterized", "Volume fragments rasterized",
+         "millions per frame, mean of the moments", scale=1e-6)
+    wrong = axes[1][0]
+    bars(wrong, "wrong_off_edges", "Pixels wrong off the ray cast's edges", "pixels, worst moment", worst=True)
+    # 0, 1 and 170 000 in one panel: linear below 1, logarithmic above.
+    wrong.set_yscale("symlog", linthresh=1)
+    top = 10 ** math.ceil(math.log10(max(max(r["wrong_off_edges"] for r in rows), 1) * 3))
+    wrong.set_ylim(0, top)
+    plain_symlog(wrong.yaxis, top)
+    for bars_of_method in wrong.containers:
+        wrong.bar_label(bars_of_method, fmt="%.0f", fontsize=7, padding=1)
+
+    # The paper's table: O(s) triangles grow with the slices (slope 1 on log axes), O(f) with
+    # their square (slope 2). Series with the same counts are drawn once, naming both.
+    tri = axes[1][1]
+    tess = select(rows, path, "tessellation", sweep="tessellation")
+    series = {}
+    for view in views:
+        for method, name in (("mcguire", "McGuire et al."), ("lengyel", "Lengyel")):
+            rs = sorted((r for r in tess if r["view"] == view and r["method"] == method), key=lambda r: r["slices"])
+            if not rs:
+                raise BadInput(f"{path}: no tessellation rows (view={view}, method={method})")
+            points = tuple((r["slices"], r["sphere_sides"] + r["sphere_dark_cap"] + r["sphere_light_cap"])
+                           for r in rs)
+            if min(min(p) for p in points) <= 0:
+                raise BadInput(f"{path}: a sphere with no slices or no volume triangles cannot go on the log axes")
+            series.setdefault(points, []).append(f"{name}, case {rs[-1]['sphere_case']:.0f}")
+    for i, (points, names) in enumerate(series.items()):
+        tri.plot([p[0] for p in points], [p[1] for p in points], "os^Dvp"[i % 6] + "-", color=f"C{i + 4}",
+                 label="; ".join(names))
+    tri.set_xscale("log", base=2)
+    tri.set_yscale("log")
+    tri.set_xticks(sorted({p[0] for points in series for p in points}))
+    tri.xaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+    tri.xaxis.set_minor_formatter(NullFormatter())
+    plain_log(tri.yaxis)
+    tri.set_xlabel("sphere slices (stacks: half as many)")
+    tri.set_ylabel("sphere volume triangles (sides + caps)")
+    tri.set_title("The sphere's volume by case, t = 1")
+    tri.grid(True, alpha=0.3)
+    tri.legend(fontsize=7, loc="upper left")
+
+    key = axes[1][2]
+    key.axis("off")
+    handles, labels = axes[0][0].get_legend_handles_labels()
+    key.legend(handles, labels, loc="center", title="method (top row and left)", frameon=False)
+    return fig
+
+
+SWEEPS = {
+    "03-recursive-mirrors": plot_recursive_mirrors,
+    "05-light-blocking": plot_light_blocking,
+    "09-cutout-extrusion": plot_cutout_extrusion,
+    "16-fast-robust-shadows": plot_fast_shadows,
+}
+
+USAGE = f"usage: {PROGRAM} SWEEP IN.csv OUT.svg   (SWEEP: {', '.join(SWEEPS)})"
+
+
+def main(argv):
+    if len(argv) == 2 and argv[1] in ("-h", "--help"):
+        print(USAGE)
+        print(__doc__.split("\n\n", 2)[2].strip())
+        return 0
+    if len(argv) != 4:
+        raise BadInput(f"expected SWEEP IN.csv OUT.svg, got {len(argv) - 1} arguments ({USAGE})")
+    sweep, csv_path, svg_path = argv[1:]
+    if sweep not in SWEEPS:
+        raise BadInput(f"unknown sweep '{sweep}' (known: {', '.join(SWEEPS)})")
+    if not svg_path.endswith(".svg"):
+        raise BadInput(f"'{svg_path}': the output must be an .svg file")
+    out_dir = os.path.dirname(os.path.abspath(svg_path))
+    if not os.path.isdir(out_dir):
+        raise BadInput(f"'{svg_path}': no folder {out_dir}")
+
+    fig = SWEEPS[sweep](csv_path)
+    # Written beside the target and renamed over it: never a half-written plot.
+    fd, tmp = tempfile.mkstemp(suffix=".svg", dir=out_dir)
+    try:
+        with os.fdopen(fd, "wb") as f:
+            fig.savefig(f, format="svg", metadata={"Date": None})
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)
+        os.replace(tmp, svg_path)
+    except OSError as e:
+        raise BadInput(f"'{svg_path}': cannot write: {e.strerror or e}") from None
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+    return 0
+
+
+if __name__ == "__main__":
+    try:
+        sys.exit(main(sys.argv))
+    except BadInput as e:
+        print(f"{PROGRAM}: {e}", file=sys.stderr)
+        sys.exit(2)
