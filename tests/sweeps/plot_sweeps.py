@@ -47,6 +47,8 @@ def read_rows(path, numeric, text=()):
                         raise BadInput(f"{path}:{line}: empty '{c}'")
                     row[c] = raw[c]
                 for c in numeric:
+                    if raw[c] is None:
+                        raise BadInput(f"{path}:{line}: the row ends before '{c}'")
                     try:
                         v = float(raw[c])
                     except (TypeError, ValueError):
@@ -354,8 +356,9 @@ def main(argv):
 
     fig = SWEEPS[sweep](csv_path)
     # Written beside the target and renamed over it: never a half-written plot.
-    fd, tmp = tempfile.mkstemp(suffix=".svg", dir=out_dir)
+    tmp = None
     try:
+        fd, tmp = tempfile.mkstemp(suffix=".svg", dir=out_dir)
         with os.fdopen(fd, "wb") as f:
             fig.savefig(f, format="svg", metadata={"Date": None})
         umask = os.umask(0)
@@ -365,7 +368,7 @@ def main(argv):
     except OSError as e:
         raise BadInput(f"'{svg_path}': cannot write: {e.strerror or e}") from None
     finally:
-        if os.path.exists(tmp):
+        if tmp and os.path.exists(tmp):
             os.unlink(tmp)
     return 0
 
