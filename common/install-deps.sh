@@ -13,7 +13,7 @@ packages=(
   libglfw3-dev libimgui-dev          # the window and its panel
   libtinyobjloader-dev               # OBJ meshes in scene files
   libgtest-dev libbenchmark-dev      # unit tests, micro-benchmarks
-  xvfb xauth                         # the window test runs under a virtual display
+  xvfb xauth xdotool                 # the window tests run under a virtual display and press keys
 )
 optional=(libosmesa6-dev)            # newer Mesa releases dropped OSMesa; EGL then serves
 

@@ -11,6 +11,7 @@
 #include <cctype>
 #include <cstdio>
 #include <iostream>
+#include <string>
 
 #include "gl/errors.h"
 #include "gl/session.h"
@@ -48,15 +49,37 @@ void switchVariant(Session& s, const std::string& name) {
   }
 }
 
+// What a key changed, one line on stderr (not with --quiet): the class sees it in the terminal,
+// and the window tests read it.
+void say(const WindowState& st, const std::string& line) {
+  if (!st.session.commandLine.quiet) std::cerr << line << "\n";
+}
+
+const char* viewName(View v) {
+  return v == View::Colour ? "colour" : v == View::StencilRamp ? "stencil" : "bit planes";
+}
+
 void onKey(GLFWwindow* w, int key, int, int action, int mods) {
-  if (action != GLFW_PRESS || ImGui::GetIO().WantCaptureKeyboard) return;
+  if (action != GLFW_PRESS) return;
+  // Esc always quits. Every other key is the lesson's, except while a panel field takes typed
+  // text (a slider ctrl-clicked to type a number): then the keys are the field's.
+  if (key == GLFW_KEY_ESCAPE) {
+    glfwSetWindowShouldClose(w, GLFW_TRUE);
+    return;
+  }
+  if (ImGui::GetIO().WantTextInput) return;
   WindowState& st = stateOf(w);
   Session& s = st.session;
   const int passCount = static_cast<int>(s.info.passes.size());
   switch (key) {
-    case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(w, GLFW_TRUE); return;
-    case GLFW_KEY_SPACE: st.paused = !st.paused; return;
-    case GLFW_KEY_TAB: st.view = static_cast<View>((static_cast<int>(st.view) + 1) % 3); return;
+    case GLFW_KEY_SPACE:
+      st.paused = !st.paused;
+      say(st, st.paused ? "paused" : "running");
+      return;
+    case GLFW_KEY_TAB:
+      st.view = static_cast<View>((static_cast<int>(st.view) + 1) % 3);
+      say(st, std::string("view: ") + viewName(st.view));
+      return;
     case GLFW_KEY_P:
       st.passStep = (mods & GLFW_MOD_SHIFT) ? (st.passStep < 0 ? passCount - 1 : st.passStep - 1)
                                             : (st.passStep + 1 >= passCount ? -1 : st.passStep + 1);
@@ -67,13 +90,16 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
       const auto& vs = s.info.variants;
       auto it = std::find_if(vs.begin(), vs.end(), [&](const Variant& v) { return v.name == s.variant; });
       switchVariant(s, std::next(it) == vs.end() ? vs.front().name : std::next(it)->name);
+      say(st, "variant: " + s.variant);
       return;
     }
     default: break;
   }
   for (Option& o : s.options)
-    if (std::toupper(static_cast<unsigned char>(o.key)) == key)
+    if (std::toupper(static_cast<unsigned char>(o.key)) == key) {
       o.value = o.value >= o.max ? o.min : o.value + 1;
+      say(st, o.name + " = " + std::to_string(o.value));
+    }
 }
 
 void onMouseButton(GLFWwindow* w, int button, int action, int) {
@@ -142,7 +168,10 @@ void drawPanel(WindowState& st, double fps) {
   Session& s = st.session;
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.75f);
-  ImGui::Begin(s.info.id.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  // No keyboard navigation in the panel: Tab is the lesson's (the view), never a jump into a
+  // slider's text field that would keep the keys from then on.
+  ImGui::Begin(s.info.id.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoNavInputs);
+  ImGui::PushAllowKeyboardFocus(false);
   ImGui::TextUnformatted(s.info.title.c_str());
   if (ImGui::BeginCombo("variant [V]", s.variant.c_str())) {
     for (const Variant& v : s.info.variants)
@@ -181,6 +210,7 @@ void drawPanel(WindowState& st, double fps) {
               static_cast<unsigned long long>(triangles));
   ImGui::TextUnformatted("drag: orbit  wheel: zoom  R: reset  S: screenshot  Esc: quit");
   ImGui::TextUnformatted("right drag: the lesson's brush, where it has one");
+  ImGui::PopAllowKeyboardFocus();
   ImGui::End();
 }
 
