@@ -101,8 +101,8 @@ int Frame::option(std::string_view name) const {
   throw std::logic_error("the lesson reads option '" + std::string(name) + "', which it does not declare");
 }
 
-void Frame::pass(std::string_view name) {
-  recorder_.pass(name);
+void Frame::pass(std::string_view name, std::string_view detail) {
+  recorder_.pass(name, detail);
 }
 
 void Frame::ownOcclusionQueries(const std::function<void()>& draw) {
@@ -253,8 +253,9 @@ std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
   bool haveSamples = true, havePrims = true, haveGpu = true;
   for (size_t i = 0; i < passes.size(); ++i) {
     const PassStats& p = passes[i];
-    out << "    {\"name\": \"" << p.name << "\", \"draw_calls\": " << p.drawCalls
-        << ", \"triangles\": " << p.triangles << ", \"samples_passed\": " << jsonNumber(p.samplesPassed)
+    out << "    {\"name\": \"" << p.name << "\", \"label\": \"" << p.label
+        << "\", \"draw_calls\": " << p.drawCalls << ", \"triangles\": " << p.triangles
+        << ", \"samples_passed\": " << jsonNumber(p.samplesPassed)
         << ", \"primitives_submitted\": " << jsonNumber(p.primitivesSubmitted)
         << ", \"gpu_ms\": " << jsonNumber(p.gpuMs) << gpuNullReason(p)
         << ", \"cpu_ms\": " << jsonNumber(p.cpuMs) << "}" << (i + 1 < passes.size() ? "," : "") << "\n";

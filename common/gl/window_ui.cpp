@@ -27,7 +27,7 @@ struct WindowState {
   double time;
   bool paused = false;
   View view = View::Colour;
-  int passStep = -1;  // -1: the finished frame; k: the snapshot after pass k
+  int passStep = -1;  // -1: the finished frame; k: the snapshot after the k-th pass that ran
   bool dragging = false;
   bool pointing = false;  // the right button held: Frame::pointer (a lesson's brush)
   double lastX = 0, lastY = 0;
@@ -55,6 +55,25 @@ void say(const WindowState& st, const std::string& line) {
   if (!st.session.commandLine.quiet) std::cerr << line << "\n";
 }
 
+// The passes the last frame ran, in order, named as they ran (PassStats::label): the stepper goes
+// through these, not through the names the lesson declares, which may run in another order, repeat
+// or not run at all.
+int passesRun(const Session& s) {
+  return static_cast<int>(s.recorder->passStats().size());
+}
+
+std::string stepName(const Session& s, int step) {
+  if (step < 0 || step >= passesRun(s)) return "finished frame";
+  return s.recorder->passStats()[static_cast<std::size_t>(step)].label;
+}
+
+void sayStep(const WindowState& st) {
+  const int n = passesRun(st.session);
+  say(st, st.passStep < 0 ? std::string("after the last pass: the finished frame")
+                          : "after pass " + std::to_string(st.passStep + 1) + " of " + std::to_string(n) +
+                                ": " + stepName(st.session, st.passStep));
+}
+
 const char* viewName(View v) {
   return v == View::Colour ? "colour" : v == View::StencilRamp ? "stencil" : "bit planes";
 }
@@ -70,7 +89,7 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
   if (ImGui::GetIO().WantTextInput) return;
   WindowState& st = stateOf(w);
   Session& s = st.session;
-  const int passCount = static_cast<int>(s.info.passes.size());
+  const int passCount = passesRun(s);
   switch (key) {
     case GLFW_KEY_SPACE:
       st.paused = !st.paused;
@@ -83,6 +102,7 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
     case GLFW_KEY_P:
       st.passStep = (mods & GLFW_MOD_SHIFT) ? (st.passStep < 0 ? passCount - 1 : st.passStep - 1)
                                             : (st.passStep + 1 >= passCount ? -1 : st.passStep + 1);
+      sayStep(st);
       return;
     case GLFW_KEY_S: st.screenshot = true; return;
     case GLFW_KEY_R: s.camera = findVariant(s.info, s.variant).camera.value_or(s.info.camera); return;
@@ -196,13 +216,11 @@ void drawPanel(WindowState& st, double fps) {
   ImGui::SameLine();
   ImGui::RadioButton("bit planes [Tab]", &view, 2);
   st.view = static_cast<View>(view);
-  const int passCount = static_cast<int>(s.info.passes.size());
-  const char* passName =
-      st.passStep < 0 ? "finished frame" : s.info.passes[static_cast<size_t>(st.passStep)].c_str();
-  ImGui::SliderInt("after pass [P]", &st.passStep, -1, passCount - 1, passName);
+  const std::string passName = stepName(s, st.passStep);
+  ImGui::SliderInt("after pass [P]", &st.passStep, -1, passesRun(s) - 1, passName.c_str());
   ImGui::Checkbox("pause [Space]", &st.paused);
   ImGui::SameLine();
-  ImGui::Text("t = %.2f s", st.time);
+  ImGui::Text(st.passStep >= 0 ? "t = %.2f s (held while stepping)" : "t = %.2f s", st.time);
   ImGui::Separator();
   std::uint64_t draws = 0, triangles = 0;
   for (const PassStats& p : s.recorder->passStats()) draws += p.drawCalls, triangles += p.triangles;
@@ -252,7 +270,7 @@ int runWindow(Session& s) {
       fps = 0.9 * fps + 0.1 / std::max(now - last, 1e-6);
       if (cl.frames)
         st.time = cl.time + frame / 60.0;
-      else if (!st.paused)
+      else if (!st.paused && st.passStep < 0)  // stepping holds time: the passes stay the ones shown
         st.time += now - last;
       last = now;
 
@@ -269,7 +287,9 @@ int runWindow(Session& s) {
         s.pointer =
             glm::vec2(static_cast<float>(cx) * sx, static_cast<float>(h) - static_cast<float>(cy) * sy);
       }
-      const int step = std::min(st.passStep, static_cast<int>(s.info.passes.size()) - 1);
+      // A variant switched to may run fewer passes: the step stays among those the last frame ran.
+      st.passStep = std::min(st.passStep, passesRun(s) - 1);
+      const int step = st.passStep;
       s.saveShadowMasks = cl.frames && frame + 1 >= *cl.frames;  // --mask-out: the last frame, as headless
       s.renderFrame(st.time, {.measure = false,
                               .captureAll = false,
