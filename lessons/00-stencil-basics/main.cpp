@@ -22,6 +22,7 @@
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
 #include "gl/shader.h"
+#include "gl/stencil_view.h"
 
 using namespace stencil;
 
@@ -191,12 +192,11 @@ class StencilBasics final : public Lesson {
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    const std::pair<GLint, glm::vec4> outcomes[] = {{0x81, {0.9f, 0.2f, 0.2f, 0.6f}},    // sfail: red
-                                                    {2, {0.95f, 0.8f, 0.1f, 0.6f}},      // dpfail: yellow
-                                                    {0xFE, {0.2f, 0.85f, 0.3f, 0.6f}}};  // dppass: green
-    for (const auto& [value, colour] : outcomes) {
-      glStencilFunc(GL_EQUAL, value, 0xFF);  // only the pixels holding this outcome
-      drawFullScreen(colour);
+    // Each outcome in the colour the stencil picture gives its value (--stencil-out, Tab).
+    for (const GLint value : {0x81, 2, 0xFE}) {  // sfail, dpfail, dppass
+      glStencilFunc(GL_EQUAL, value, 0xFF);      // only the pixels holding this outcome
+      const auto c = stencilColour(static_cast<std::uint8_t>(value));
+      drawFullScreen({c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f, 0.6f});
     }
     glDisable(GL_BLEND);
     f.pass("show");
