@@ -126,7 +126,8 @@ void Frame::shadowMask(std::string_view name) {
 Session::Session(const LessonInfo& lessonInfo, const LessonFactory& factory, const CommandLine& cl,
                  Backend backend)
     : info(lessonInfo), commandLine(cl), camera(lessonInfo.camera) {
-  context = createContext(backend, cl.width, cl.height, info.id + ": " + info.title);
+  const int panel = backend == Backend::Window && !cl.frames ? kWindowPanelWidth : 0;  // beside the picture
+  context = createContext(backend, cl.width + panel, cl.height, info.id + ": " + info.title);
   enableDebugOutput(context->features());
   checkNeeds(info.needs, "lesson " + info.id);
   setVariant(cl.variant.empty() ? info.variants.front().name : cl.variant, cl.settings);

@@ -48,6 +48,11 @@ class Session {
   bool toldNoClipControl_ = false;
 };
 
+// The window's panel: a strip this many screen pixels wide at the window's left, beside the
+// picture, never over it. A window run opens this much wider than --size, so the picture is the
+// size asked for (with --frames, a test run, the panel starts hidden and the window is --size).
+constexpr int kWindowPanelWidth = 300;
+
 // The interactive loop (window_ui.cpp). Returns the exit code.
 int runWindow(Session&);
 

@@ -345,8 +345,10 @@ Image stencilBitPlanes(const Image& stencil) {
         const bool set = (*stencil.at(px, py) >> bit) & 1u;
         fillRect(out, ox + px, oy + py, 1, 1, set ? Rgb{255, 255, 255} : Rgb{0, 0, 0});
       }
-    fillRect(out, ox + 2, oy + 2, 4 * 2 + 4, 5 * 2 + 4, {200, 40, 40});
-    drawNumber(out, ox + 4, oy + 4, bit, 2, {255, 255, 255});
+    // The label grows with the tile: the window shows the eight tiles at a quarter of their size.
+    const int scale = std::max(2, w / 64);
+    fillRect(out, ox + scale, oy + scale, 5 * scale, 7 * scale, {200, 40, 40});
+    drawNumber(out, ox + 2 * scale, oy + 2 * scale, bit, scale, {255, 255, 255});
   }
   return out;
 }

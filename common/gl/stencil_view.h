@@ -35,7 +35,8 @@ std::array<std::array<std::uint8_t, 3>, 256> stencilPictureColours(
 constexpr std::uint64_t kRarePixels = 16;
 Image stencilRamp(const Image& stencil);
 
-// The eight bit planes side by side (4 x 2 tiles, bit 0 top left): white where set.
+// The eight bit planes side by side (4 x 2 tiles, bit 0 top left): white where set, each tile
+// labelled with its bit in digits 1/64 of the tile's width wide (at least 2 pixels a dot).
 Image stencilBitPlanes(const Image& stencil);
 
 // Depth complexity's colours (lesson 13): a count of 0 is black, 1..top run along one ramp from

@@ -31,8 +31,11 @@ struct WindowState {
   bool dragging = false;
   bool pointing = false;  // the right button held: Frame::pointer (a lesson's brush)
   double lastX = 0, lastY = 0;
-  bool screenshot = false;
+  bool screenshot = false;        // S: the picture alone
+  bool windowScreenshot = false;  // shift+S: the whole window, the panel too
   int screenshots = 0;
+  bool panel = true;       // F1 hides and shows it
+  bool sayLayout = false;  // say the picture's size once the layout has changed
 };
 
 WindowState& stateOf(GLFWwindow* w) {
@@ -104,7 +107,11 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
                                             : (st.passStep + 1 >= passCount ? -1 : st.passStep + 1);
       sayStep(st);
       return;
-    case GLFW_KEY_S: st.screenshot = true; return;
+    case GLFW_KEY_S: ((mods & GLFW_MOD_SHIFT) ? st.windowScreenshot : st.screenshot) = true; return;
+    case GLFW_KEY_F1:
+      st.panel = !st.panel;
+      st.sayLayout = true;
+      return;
     case GLFW_KEY_R: s.camera = findVariant(s.info, s.variant).camera.value_or(s.info.camera); return;
     case GLFW_KEY_V: {
       const auto& vs = s.info.variants;
@@ -157,22 +164,23 @@ class Display {
     glDeleteTextures(1, &texture_);
     glDeleteFramebuffers(1, &fbo_);
   }
-  void show(const Image& image, int windowW, int windowH) {
+  void show(const Image& image, int areaX, int areaW, int areaH) {
     glBindTexture(GL_TEXTURE_2D, texture_);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                  image.pixels.data());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
     glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_, 0);
-    blitFit(image.width, image.height, windowW, windowH, true);
+    blitFit(image.width, image.height, areaX, areaW, areaH, true);
   }
-  // The framebuffer bound for reading is shown as it is (bottom row first, GL's way).
-  static void blitFit(int w, int h, int windowW, int windowH, bool flip) {
-    const float scale = std::min(static_cast<float>(windowW) / static_cast<float>(w),
-                                 static_cast<float>(windowH) / static_cast<float>(h));
+  // The framebuffer bound for reading is shown as it is (bottom row first, GL's way), fitted into
+  // the picture's area: the window from areaX on, areaW x areaH.
+  static void blitFit(int w, int h, int areaX, int areaW, int areaH, bool flip) {
+    const float scale = std::min(static_cast<float>(areaW) / static_cast<float>(w),
+                                 static_cast<float>(areaH) / static_cast<float>(h));
     const int dw = static_cast<int>(static_cast<float>(w) * scale),
               dh = static_cast<int>(static_cast<float>(h) * scale);
-    const int x0 = (windowW - dw) / 2, y0 = (windowH - dh) / 2;
+    const int x0 = areaX + (areaW - dw) / 2, y0 = (areaH - dh) / 2;
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
@@ -184,14 +192,17 @@ class Display {
   GLuint texture_ = 0, fbo_ = 0;
 };
 
-void drawPanel(WindowState& st, double fps) {
+void drawPanel(WindowState& st, double fps, float height) {
   Session& s = st.session;
-  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowBgAlpha(0.75f);
+  ImGui::SetNextWindowPos(ImVec2(0, 0));
+  ImGui::SetNextWindowSize(ImVec2(static_cast<float>(kWindowPanelWidth), height));
   // No keyboard navigation in the panel: Tab is the lesson's (the view), never a jump into a
   // slider's text field that would keep the keys from then on.
-  ImGui::Begin(s.info.id.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoNavInputs);
+  ImGui::Begin(s.info.id.c_str(), nullptr,
+               ImGuiWindowFlags_NoNavInputs | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                   ImGuiWindowFlags_NoCollapse);
   ImGui::PushAllowKeyboardFocus(false);
+  ImGui::PushItemWidth(-120.0f);  // the widgets leave room for their labels in the strip
   ImGui::TextUnformatted(s.info.title.c_str());
   if (ImGui::BeginCombo("variant [V]", s.variant.c_str())) {
     for (const Variant& v : s.info.variants)
@@ -214,22 +225,40 @@ void drawPanel(WindowState& st, double fps) {
   ImGui::SameLine();
   ImGui::RadioButton("stencil", &view, 1);
   ImGui::SameLine();
-  ImGui::RadioButton("bit planes [Tab]", &view, 2);
+  ImGui::RadioButton("bits [Tab]", &view, 2);
   st.view = static_cast<View>(view);
   const std::string passName = stepName(s, st.passStep);
   ImGui::SliderInt("after pass [P]", &st.passStep, -1, passesRun(s) - 1, passName.c_str());
   ImGui::Checkbox("pause [Space]", &st.paused);
   ImGui::SameLine();
-  ImGui::Text(st.passStep >= 0 ? "t = %.2f s (held while stepping)" : "t = %.2f s", st.time);
+  ImGui::Text(st.passStep >= 0 ? "t = %.2f s, held" : "t = %.2f s", st.time);
   ImGui::Separator();
   std::uint64_t draws = 0, triangles = 0;
   for (const PassStats& p : s.recorder->passStats()) draws += p.drawCalls, triangles += p.triangles;
   ImGui::Text("%.0f fps, %llu draw calls, %llu triangles", fps, static_cast<unsigned long long>(draws),
               static_cast<unsigned long long>(triangles));
-  ImGui::TextUnformatted("drag: orbit  wheel: zoom  R: reset  S: screenshot  Esc: quit");
-  ImGui::TextUnformatted("right drag: the lesson's brush, where it has one");
+  ImGui::TextWrapped(
+      "drag: orbit  wheel: zoom  R: reset  S: screenshot (shift: with the panel)  "
+      "F1: hide the panel  Esc: quit");
+  ImGui::TextWrapped("right drag: the lesson's brush, where it has one");
+  ImGui::PopItemWidth();
   ImGui::PopAllowKeyboardFocus();
   ImGui::End();
+}
+
+// Columns x0 .. x0 + width of an image.
+Image crop(const Image& image, int x0, int width) {
+  Image out(width, image.height, image.channels);
+  for (int y = 0; y < image.height; ++y)
+    std::copy_n(image.at(x0, y), static_cast<std::size_t>(width * image.channels), out.at(0, y));
+  return out;
+}
+
+void saveScreenshot(WindowState& st, const Image& image) {
+  char name[128];
+  std::snprintf(name, sizeof name, "screenshot-%s-%03d.png", st.session.info.id.c_str(), st.screenshots++);
+  writePng(name, image);
+  std::cerr << "saved " << name << "\n";
 }
 
 }  // namespace
@@ -238,6 +267,8 @@ int runWindow(Session& s) {
   GLFWwindow* window = s.context->window();
   const CommandLine& cl = s.commandLine;
   WindowState st{.session = s, .time = cl.time};
+  st.panel = !cl.frames;  // a --frames run is a test: the window is the picture alone
+  st.sayLayout = true;
   glfwSetWindowUserPointer(window, &st);
   // Ours first: ImGui chains to the callbacks installed before it.
   glfwSetKeyCallback(window, onKey);
@@ -262,7 +293,21 @@ int runWindow(Session& s) {
         glfwWaitEvents();
         continue;
       }
-      if (w != s.framebuffer->width() || h != s.framebuffer->height()) s.resize(w, h);
+      // The picture's area: the window right of the panel, in framebuffer pixels (a HiDPI window
+      // counts its panel in screen coordinates).
+      int ww = 1, wh = 1;
+      glfwGetWindowSize(window, &ww, &wh);
+      const float sx = static_cast<float>(w) / static_cast<float>(std::max(ww, 1)),
+                  sy = static_cast<float>(h) / static_cast<float>(std::max(wh, 1));
+      const int areaX = st.panel ? std::min(static_cast<int>(kWindowPanelWidth * sx), w - 1) : 0;
+      const int areaW = w - areaX;
+      if (areaW != s.framebuffer->width() || h != s.framebuffer->height()) s.resize(areaW, h);
+      if (st.sayLayout) {
+        say(st, std::string(st.panel ? "panel shown" : "panel hidden") + ": the picture is " +
+                    std::to_string(areaW) + "x" + std::to_string(h) +
+                    (st.panel ? " beside it, from x = " + std::to_string(areaX) : std::string()));
+        st.sayLayout = false;
+      }
 
       // With --frames the window steps time exactly like a headless run, so its pixels
       // can be compared with a golden.
@@ -279,13 +324,9 @@ int runWindow(Session& s) {
       s.pointer.reset();
       if (st.pointing) {
         double cx = 0, cy = 0;
-        int ww = 1, wh = 1;
         glfwGetCursorPos(window, &cx, &cy);
-        glfwGetWindowSize(window, &ww, &wh);
-        const float sx = static_cast<float>(w) / static_cast<float>(std::max(ww, 1)),
-                    sy = static_cast<float>(h) / static_cast<float>(std::max(wh, 1));
-        s.pointer =
-            glm::vec2(static_cast<float>(cx) * sx, static_cast<float>(h) - static_cast<float>(cy) * sy);
+        s.pointer = glm::vec2(static_cast<float>(cx) * sx - static_cast<float>(areaX),
+                              static_cast<float>(h) - static_cast<float>(cy) * sy);
       }
       // A variant switched to may run fewer passes: the step stays among those the last frame ran.
       st.passStep = std::min(st.passStep, passesRun(s) - 1);
@@ -301,24 +342,21 @@ int runWindow(Session& s) {
       Image shown;
       if (st.view == View::Colour && !snap) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, s.framebuffer->id());
-        Display::blitFit(s.framebuffer->width(), s.framebuffer->height(), w, h, false);
+        Display::blitFit(s.framebuffer->width(), s.framebuffer->height(), areaX, areaW, h, false);
       } else {
         const Image stencil = snap ? snap->stencil : s.framebuffer->readStencil();
         shown = st.view == View::Colour        ? snap->colour
                 : st.view == View::StencilRamp ? stencilRamp(stencil)
                                                : stencilBitPlanes(stencil);
-        display.show(shown, w, h);
+        display.show(shown, areaX, areaW, h);
       }
 
       const bool lastFrame = cl.frames && frame + 1 >= *cl.frames;
       if (st.screenshot || lastFrame) {
         // What the window shows, without the panel: read back from the window itself.
-        const Image screen = readColourPixels(0, w, h);
+        const Image screen = crop(readColourPixels(0, w, h), areaX, areaW);
         if (st.screenshot) {
-          char name[128];
-          std::snprintf(name, sizeof name, "screenshot-%s-%03d.png", s.info.id.c_str(), st.screenshots++);
-          writePng(name, screen);
-          std::cerr << "saved " << name << "\n";
+          saveScreenshot(st, screen);
           st.screenshot = false;
         }
         if (lastFrame) {
@@ -330,11 +368,15 @@ int runWindow(Session& s) {
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
-      drawPanel(st, fps);
+      if (st.panel) drawPanel(st, fps, static_cast<float>(wh));
       ImGui::Render();
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       glViewport(0, 0, w, h);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      if (st.windowScreenshot) {  // the window as the class sees it, the panel too
+        saveScreenshot(st, readColourPixels(0, w, h));
+        st.windowScreenshot = false;
+      }
       glfwSwapBuffers(window);
     }
   }
