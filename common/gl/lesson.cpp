@@ -1,12 +1,17 @@
 #include "gl/lesson.h"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 #include <iostream>
 #include <numeric>
+#include <regex>
 #include <sstream>
 
 #include "gl/debug.h"
@@ -211,6 +216,20 @@ void Session::renderFrame(double time, FrameRequest request) {
   recorder->endFrame();
   viewProjection = frame.projection * frame.view;
   if (commandLine.oracle) shadowCheck = lesson->shadowCheck(frame);
+}
+
+std::vector<std::filesystem::path> courseLessons() {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) return {};
+  static const std::regex kLessonName("[0-9][0-9]-[a-z0-9-]+");
+  std::vector<std::filesystem::path> lessons;
+  for (const auto& entry : std::filesystem::directory_iterator(self.parent_path(), ec))
+    if (entry.is_regular_file(ec) && std::regex_match(entry.path().filename().string(), kLessonName) &&
+        access(entry.path().c_str(), X_OK) == 0)
+      lessons.push_back(entry.path());
+  std::sort(lessons.begin(), lessons.end());
+  return lessons;
 }
 
 // ---- headless run -----------------------------------------------------------------------
@@ -553,7 +572,23 @@ int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, 
       std::cerr << "backend: " << backendName(choice.backend) << " (" << choice.reason << "); " << f.renderer
                 << ", GL " << f.major << "." << f.minor << "; " << f.summary() << "\n";
     }
-    return choice.backend == Backend::Window ? runWindow(*session) : runHeadless(*session);
+    if (choice.backend != Backend::Window) return runHeadless(*session);
+    const int code = runWindow(*session);
+    const std::optional<std::filesystem::path> next = session->nextLesson;
+    session.reset();  // the window closes before the next lesson opens its own
+    if (next) {
+      // The next lesson in the window, at this one's size; --quiet carries over.
+      const std::string exe = next->string(),
+                        size = std::to_string(cl.width) + "x" + std::to_string(cl.height);
+      std::vector<std::string> args = {exe, "--backend", "window", "--size", size};
+      if (cl.quiet) args.push_back("--quiet");
+      std::vector<char*> argvNext;
+      for (std::string& a : args) argvNext.push_back(a.data());
+      argvNext.push_back(nullptr);
+      execv(exe.c_str(), argvNext.data());
+      throw std::runtime_error("cannot start " + exe + ": " + std::strerror(errno));
+    }
+    return code;
   } catch (const UsageError& e) {
     std::cerr << program << ": error: " << e.what() << "\n";
     return 2;

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <string>
 
@@ -34,8 +35,10 @@ struct WindowState {
   bool screenshot = false;        // S: the picture alone
   bool windowScreenshot = false;  // shift+S: the whole window, the panel too
   int screenshots = 0;
-  bool panel = true;       // F1 hides and shows it
-  bool sayLayout = false;  // say the picture's size once the layout has changed
+  bool panel = true;                               // F1 hides and shows it
+  std::vector<std::filesystem::path> course = {};  // courseLessons()
+  int lessonIndex = -1;                            // this lesson's place in it, -1 where it is not there
+  bool sayLayout = false;                          // say the picture's size once the layout has changed
 };
 
 WindowState& stateOf(GLFWwindow* w) {
@@ -81,6 +84,18 @@ const char* viewName(View v) {
   return v == View::Colour ? "colour" : v == View::StencilRamp ? "stencil" : "bit planes";
 }
 
+// Closes this lesson's window to open the course's lesson at `index` in its place (Session::nextLesson).
+void goToLesson(GLFWwindow* w, WindowState& st, int index) {
+  if (st.lessonIndex < 0 || index == st.lessonIndex) return;
+  if (index < 0 || index >= static_cast<int>(st.course.size())) {
+    say(st, index < 0 ? "the first lesson of the course" : "the last lesson of the course");
+    return;
+  }
+  st.session.nextLesson = st.course[static_cast<std::size_t>(index)];
+  say(st, "next: " + st.session.nextLesson->filename().string());
+  glfwSetWindowShouldClose(w, GLFW_TRUE);
+}
+
 void onKey(GLFWwindow* w, int key, int, int action, int mods) {
   if (action != GLFW_PRESS) return;
   // Esc always quits. Every other key is the lesson's, except while a panel field takes typed
@@ -108,6 +123,8 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
       sayStep(st);
       return;
     case GLFW_KEY_S: ((mods & GLFW_MOD_SHIFT) ? st.windowScreenshot : st.screenshot) = true; return;
+    case GLFW_KEY_PAGE_DOWN: goToLesson(w, st, st.lessonIndex + 1); return;
+    case GLFW_KEY_PAGE_UP: goToLesson(w, st, st.lessonIndex - 1); return;
     case GLFW_KEY_F1:
       st.panel = !st.panel;
       st.sayLayout = true;
@@ -192,7 +209,7 @@ class Display {
   GLuint texture_ = 0, fbo_ = 0;
 };
 
-void drawPanel(WindowState& st, double fps, float height) {
+void drawPanel(GLFWwindow* window, WindowState& st, double fps, float height) {
   Session& s = st.session;
   ImGui::SetNextWindowPos(ImVec2(0, 0));
   ImGui::SetNextWindowSize(ImVec2(static_cast<float>(kWindowPanelWidth), height));
@@ -204,6 +221,14 @@ void drawPanel(WindowState& st, double fps, float height) {
   ImGui::PushAllowKeyboardFocus(false);
   ImGui::PushItemWidth(-120.0f);  // the widgets leave room for their labels in the strip
   ImGui::TextUnformatted(s.info.title.c_str());
+  if (st.lessonIndex >= 0 &&
+      ImGui::BeginCombo("lesson [PgUp PgDn]",
+                        st.course[static_cast<std::size_t>(st.lessonIndex)].filename().c_str())) {
+    for (std::size_t i = 0; i < st.course.size(); ++i)
+      if (ImGui::Selectable(st.course[i].filename().c_str(), static_cast<int>(i) == st.lessonIndex))
+        goToLesson(window, st, static_cast<int>(i));
+    ImGui::EndCombo();
+  }
   if (ImGui::BeginCombo("variant [V]", s.variant.c_str())) {
     for (const Variant& v : s.info.variants)
       if (ImGui::Selectable(v.name.c_str(), v.name == s.variant)) switchVariant(s, v.name);
@@ -239,7 +264,7 @@ void drawPanel(WindowState& st, double fps, float height) {
               static_cast<unsigned long long>(triangles));
   ImGui::TextWrapped(
       "drag: orbit  wheel: zoom  R: reset  S: screenshot (shift: with the panel)  "
-      "F1: hide the panel  Esc: quit");
+      "PgDn PgUp: next, previous lesson  F1: hide the panel  Esc: quit");
   ImGui::TextWrapped("right drag: the lesson's brush, where it has one");
   ImGui::PopItemWidth();
   ImGui::PopAllowKeyboardFocus();
@@ -267,8 +292,15 @@ int runWindow(Session& s) {
   GLFWwindow* window = s.context->window();
   const CommandLine& cl = s.commandLine;
   WindowState st{.session = s, .time = cl.time};
+  st.course = courseLessons();
   st.panel = !cl.frames;  // a --frames run is a test: the window is the picture alone
   st.sayLayout = true;
+  for (std::size_t i = 0; i < st.course.size(); ++i)
+    if (st.course[i].filename() == s.info.id) st.lessonIndex = static_cast<int>(i);
+  say(st, "lesson " + s.info.id + ": " + s.info.title +
+              (st.lessonIndex >= 0 ? " (" + std::to_string(st.lessonIndex + 1) + " of " +
+                                         std::to_string(st.course.size()) + " in the course)"
+                                   : std::string()));
   glfwSetWindowUserPointer(window, &st);
   // Ours first: ImGui chains to the callbacks installed before it.
   glfwSetKeyCallback(window, onKey);
@@ -368,7 +400,7 @@ int runWindow(Session& s) {
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
-      if (st.panel) drawPanel(st, fps, static_cast<float>(wh));
+      if (st.panel) drawPanel(window, st, fps, static_cast<float>(wh));
       ImGui::Render();
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       glViewport(0, 0, w, h);
