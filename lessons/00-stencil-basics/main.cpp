@@ -196,7 +196,7 @@ class StencilBasics final : public Lesson {
     for (const GLint value : {0x81, 2, 0xFE}) {  // sfail, dpfail, dppass
       glStencilFunc(GL_EQUAL, value, 0xFF);      // only the pixels holding this outcome
       const auto c = stencilColour(static_cast<std::uint8_t>(value));
-      drawFullScreen({c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f, 0.6f});
+      drawFullScreen({c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f, 0.8f});
     }
     glDisable(GL_BLEND);
     f.pass("show");
@@ -244,6 +244,13 @@ class StencilBasics final : public Lesson {
 
   // ---- drawing helpers (no stencil state in here) -----------------------------------------
   void drawScene(const Frame& f, bool night) {
+    // The sky first, behind everything: bright by day, the clear colour by night, so the keyhole
+    // shows day in its sky too. It neither tests nor writes depth: the scene covers it.
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    drawFullScreen(night ? glm::vec4(0.05f, 0.06f, 0.1f, 1.0f) : glm::vec4(0.55f, 0.72f, 0.92f, 1.0f));
+    glDepthMask(GL_TRUE);
+    glEnable(GL_DEPTH_TEST);
     const float t = static_cast<float>(f.time);
     glm::mat4 torus = glm::translate(glm::mat4(1), {-0.3f, 0.9f, 0.0f});
     torus = glm::rotate(torus, 0.7f * t, {0, 1, 0});
