@@ -18,7 +18,7 @@ std::array<std::uint8_t, 3> stencilColour(std::uint8_t value);
 // D65 white) of two sRGB byte triples. About 2.3 is just noticeable; kStencilDistinct apart,
 // two flat regions side by side read as different colours at a glance.
 float colourDistance(const std::array<std::uint8_t, 3>&, const std::array<std::uint8_t, 3>&);
-constexpr float kStencilDistinct = 20.0f;
+constexpr float kStencilDistinct = 25.0f;
 
 // The colours one stencil picture gives its values, histogram[v] pixels holding v (256 entries):
 // each present value keeps stencilColour(v) unless that lies within kStencilDistinct of black or
