@@ -14,7 +14,7 @@ mkdir -p "$out"
 cd "$work"
 "$root/tests/window/keys.sh" "$build/lessons/15-robust-zfail" --time 1 --size 400x420 -- "space=^paused$" "shift+s=^saved "
 "$root/tests/window/keys.sh" "$build/lessons/16-fast-robust-shadows" --time 1 --size 400x420 -- \
-  "p=: ambient$" "p=: shadows .light 1.$" "p=: illumination .light 1.$" "p=: shadows .light 2.$" "Tab=^view: stencil$" "shift+s=^saved "
+  "p=: ambient " "p=: shadows .light 1. " "p=: illumination .light 1. " "p=: shadows .light 2. " "Tab=^view: stencil$" "shift+s=^saved "
 mv screenshot-15-robust-zfail-000.png "$out/panel.png"
 mv screenshot-16-fast-robust-shadows-000.png "$out/stepped-pass.png"
 echo "wrote $out/panel.png and $out/stepped-pass.png"

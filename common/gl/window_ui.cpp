@@ -75,9 +75,11 @@ std::string stepName(const Session& s, int step) {
 
 void sayStep(const WindowState& st) {
   const int n = passesRun(st.session);
+  char held[48];  // the frame's time, which stepping holds
+  std::snprintf(held, sizeof held, " (t = %.3f s, held)", st.time);
   say(st, st.passStep < 0 ? std::string("after the last pass: the finished frame")
                           : "after pass " + std::to_string(st.passStep + 1) + " of " + std::to_string(n) +
-                                ": " + stepName(st.session, st.passStep));
+                                ": " + stepName(st.session, st.passStep) + held);
 }
 
 const char* viewName(View v) {
