@@ -15,7 +15,7 @@ packages=(
   nlohmann-json3-dev                 # the --stats JSON, written and read
   python3-matplotlib                 # the sweeps' plots (tests/sweeps/plot_sweeps.py)
   libgtest-dev libbenchmark-dev      # unit tests, micro-benchmarks
-  xvfb xauth                         # the window test runs under a virtual display
+  xvfb xauth xdotool                 # the window tests run under a virtual display and press keys
 )
 optional=(libosmesa6-dev)            # newer Mesa releases dropped OSMesa; EGL then serves
 

@@ -1,13 +1,18 @@
 #include "gl/lesson.h"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <numeric>
+#include <regex>
 #include <sstream>
 
 #include "gl/debug.h"
@@ -102,8 +107,8 @@ int Frame::option(std::string_view name) const {
   throw std::logic_error("the lesson reads option '" + std::string(name) + "', which it does not declare");
 }
 
-void Frame::pass(std::string_view name) {
-  recorder_.pass(name);
+void Frame::pass(std::string_view name, std::string_view detail) {
+  recorder_.pass(name, detail);
 }
 
 void Frame::ownOcclusionQueries(const std::function<void()>& draw) {
@@ -127,7 +132,8 @@ void Frame::shadowMask(std::string_view name) {
 Session::Session(const LessonInfo& lessonInfo, const LessonFactory& factory, const CommandLine& cl,
                  Backend backend)
     : info(lessonInfo), commandLine(cl), camera(lessonInfo.camera) {
-  context = createContext(backend, cl.width, cl.height, info.id + ": " + info.title);
+  const int panel = backend == Backend::Window && !cl.frames ? kWindowPanelWidth : 0;  // beside the picture
+  context = createContext(backend, cl.width + panel, cl.height, info.id + ": " + info.title);
   enableDebugOutput(context->features());
   checkNeeds(info.needs, "lesson " + info.id);
   setVariant(cl.variant.empty() ? info.variants.front().name : cl.variant, cl.settings);
@@ -213,6 +219,20 @@ void Session::renderFrame(double time, FrameRequest request) {
   if (commandLine.oracle) shadowCheck = lesson->shadowCheck(frame);
 }
 
+std::vector<std::filesystem::path> courseLessons() {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) return {};
+  static const std::regex kLessonName("[0-9][0-9]-[a-z0-9-]+");
+  std::vector<std::filesystem::path> lessons;
+  for (const auto& entry : std::filesystem::directory_iterator(self.parent_path(), ec))
+    if (entry.is_regular_file(ec) && std::regex_match(entry.path().filename().string(), kLessonName) &&
+        access(entry.path().c_str(), X_OK) == 0)
+      lessons.push_back(entry.path());
+  std::sort(lessons.begin(), lessons.end());
+  return lessons;
+}
+
 // ---- headless run -----------------------------------------------------------------------
 
 namespace {
@@ -229,6 +249,7 @@ nlohmann::ordered_json orNull(const std::optional<T>& v) {
 
 nlohmann::ordered_json passJson(const PassStats& p) {
   nlohmann::ordered_json j = {{"name", p.name},
+                              {"label", p.label},  // as the pass stepper names it: "shadows (light 2)"
                               {"draw_calls", p.drawCalls},
                               {"triangles", p.triangles},
                               {"samples_passed", orNull(p.samplesPassed)},
@@ -283,7 +304,7 @@ std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
   nlohmann::ordered_json totalJson = {{"passes", passes.size()}};
   const nlohmann::ordered_json totalFields = passJson(total);
   for (const auto& field : totalFields.items())
-    if (field.key() != "name") totalJson[field.key()] = field.value();
+    if (field.key() != "name" && field.key() != "label") totalJson[field.key()] = field.value();
   out["total"] = totalJson;
   nlohmann::ordered_json counts = nlohmann::ordered_json::object();
   for (const auto& [name, value] : s.recorder->counts()) counts[name] = value;
@@ -556,7 +577,23 @@ int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, 
       std::cerr << "backend: " << backendName(choice.backend) << " (" << choice.reason << "); " << f.renderer
                 << ", GL " << f.major << "." << f.minor << "; " << f.summary() << "\n";
     }
-    return choice.backend == Backend::Window ? runWindow(*session) : runHeadless(*session);
+    if (choice.backend != Backend::Window) return runHeadless(*session);
+    const int code = runWindow(*session);
+    const std::optional<std::filesystem::path> next = session->nextLesson;
+    session.reset();  // the window closes before the next lesson opens its own
+    if (next) {
+      // The next lesson in the window, at this one's size; --quiet carries over.
+      const std::string exe = next->string(),
+                        size = std::to_string(cl.width) + "x" + std::to_string(cl.height);
+      std::vector<std::string> args = {exe, "--backend", "window", "--size", size};
+      if (cl.quiet) args.push_back("--quiet");
+      std::vector<char*> argvNext;
+      for (std::string& a : args) argvNext.push_back(a.data());
+      argvNext.push_back(nullptr);
+      execv(exe.c_str(), argvNext.data());
+      throw std::runtime_error("cannot start " + exe + ": " + std::strerror(errno));
+    }
+    return code;
   } catch (const UsageError& e) {
     std::cerr << program << ": error: " << e.what() << "\n";
     return 2;

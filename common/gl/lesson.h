@@ -115,7 +115,9 @@ class Frame {
 
   int option(std::string_view name) const;  // unknown names throw: a typo is a bug
   bool on(std::string_view name) const { return option(name) != 0; }
-  void pass(std::string_view name);  // marks the end of a named pass
+  // Marks the end of a named pass. A pass the frame repeats may say which repeat it is in
+  // `detail` ("light 2", "level 3"): the window's pass stepper and --stats show it beside the name.
+  void pass(std::string_view name, std::string_view detail = {});
   // Adds to a named count of the lesson's own (e.g. "scene_renderings"), reported per frame
   // under "counts" in --stats: work that draw calls and triangles do not show.
   void count(std::string_view name, std::uint64_t amount = 1);

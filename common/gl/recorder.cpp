@@ -80,10 +80,12 @@ void PassRecorder::beginPass() {
   passStart_ = std::chrono::steady_clock::now();
 }
 
-void PassRecorder::pass(std::string_view name) {
+void PassRecorder::pass(std::string_view name, std::string_view detail) {
   if (std::find(declared_.begin(), declared_.end(), name) == declared_.end())
     throw std::logic_error("pass '" + std::string(name) + "' is not declared by the lesson");
   current_.name = name;
+  current_.detail = detail;
+  current_.label = current_.name;  // endFrame numbers the repeats
   if (request_.measure) {
     const Queries& q = queries_[stats_.size()];
     glEndQuery(GL_SAMPLES_PASSED);
@@ -98,9 +100,27 @@ void PassRecorder::pass(std::string_view name) {
   stats_.push_back(current_);
   pausedSamples_.push_back(currentPaused_);
   if (request_.captureAll || request_.captureOnly == index)
-    snapshots_.push_back({current_.name, framebuffer_.readColour(), framebuffer_.readStencil()});
+    snapshots_.push_back({.pass = current_.name,
+                          .label = current_.label,
+                          .index = index,
+                          .colour = framebuffer_.readColour(),
+                          .stencil = framebuffer_.readStencil()});
   framebuffer_.bind();  // reading may have changed the read binding; keep drawing into ours
   beginPass();
+}
+
+void PassRecorder::labelPasses() {
+  for (PassStats& p : stats_) {
+    if (!p.detail.empty()) {
+      p.label = p.name + " (" + p.detail + ")";
+      continue;
+    }
+    const auto sameName = [&](const PassStats& q) { return q.name == p.name && q.detail.empty(); };
+    if (std::count_if(stats_.begin(), stats_.end(), sameName) < 2) continue;
+    const auto before = std::count_if(stats_.data(), &p, sameName);
+    p.label = p.name + " #" + std::to_string(before + 1);
+  }
+  for (Snapshot& s : snapshots_) s.label = stats_[s.index].label;
 }
 
 void PassRecorder::pauseSamples() {
@@ -134,6 +154,7 @@ void PassRecorder::endFrame() {
   if (current_.drawCalls > 0)
     throw std::logic_error("draw calls after the last named pass: mark it with frame.pass()");
   checkGlErrors("at the end of the frame");
+  labelPasses();
   if (!request_.measure) return;
   for (std::size_t i = 0; i < stats_.size(); ++i) {
     stats_[i].samplesPassed = queryResult(queries_[i].samples) + pausedSamples_[i];

@@ -18,7 +18,11 @@
 namespace stencil {
 
 struct PassStats {
-  std::string name;
+  std::string name;  // as declared (LessonInfo::passes)
+  // The pass as it ran: the name with the detail the lesson gave (Frame::pass), "shadows (light 2)";
+  // a name the frame repeats without details is numbered, "reflection #2"; else the name alone.
+  std::string label;
+  std::string detail;
   std::uint64_t drawCalls = 0;
   std::uint64_t triangles = 0;                       // counted on the CPU at each draw
   std::optional<std::uint64_t> samplesPassed;        // occlusion query: fragments that passed
@@ -29,7 +33,9 @@ struct PassStats {
 };
 
 struct Snapshot {
-  std::string pass;
+  std::string pass;     // the declared name
+  std::string label;    // PassStats::label
+  std::size_t index{};  // the pass's index in the frame
   Image colour, stencil;
 };
 
@@ -45,14 +51,15 @@ class PassRecorder {
   ~PassRecorder();
 
   void beginFrame(FrameRequest);
-  void pass(std::string_view name);                         // the end of a named pass
+  // The end of a named pass; detail (optional) says which of its repeats it was ("light 2").
+  void pass(std::string_view name, std::string_view detail = {});
   void count(std::string_view name, std::uint64_t amount);  // a lesson's own count (Frame::count)
   // Ends the current pass's occlusion query early, keeping what it counted so far, and begins it
   // again: between the two the lesson may run its own (Frame::ownOcclusionQueries). No-ops
   // unless the frame is measured.
   void pauseSamples();
   void resumeSamples();
-  void endFrame();  // reads the queries back
+  void endFrame();  // labels the passes that ran and reads the queries back
 
   const std::vector<std::string>& declaredPasses() const { return declared_; }
   const std::vector<PassStats>& passStats() const { return stats_; }  // last frame
@@ -62,6 +69,7 @@ class PassRecorder {
 
  private:
   void beginPass();
+  void labelPasses();
   struct Queries {
     unsigned samples = 0, time = 0, primitives = 0;
   };

@@ -1,5 +1,6 @@
 // Everything one run of a lesson holds, shared by the headless and the window paths.
 #pragma once
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -40,6 +41,9 @@ class Session {
   bool saveShadowMasks = false;            // Frame::shadowMask writes under --mask-out (the last frame)
   bool reversedDepth = false;              // the variant's reversed float depth, where the driver allows it
   std::optional<glm::vec2> pointer;        // Frame::pointer for the next frame (the window sets it)
+  // The lesson program the window asked to go to (the course's next or previous lesson): once this
+  // session has closed its window, the program replaces this one (execv), in a window of its own.
+  std::optional<std::filesystem::path> nextLesson;
 
  private:
   void checkNeeds(const std::vector<Feature>&, const std::string& who) const;
@@ -47,6 +51,15 @@ class Session {
   DepthFormat depthFormat() const;  // the framebuffer's for reversedDepth
   bool toldNoClipControl_ = false;
 };
+
+// The window's panel: a strip this many screen pixels wide at the window's left, beside the
+// picture, never over it. A window run opens this much wider than --size, so the picture is the
+// size asked for (with --frames, a test run, the panel starts hidden and the window is --size).
+constexpr int kWindowPanelWidth = 300;
+
+// The course: the lesson programs beside this one (files named NN-name in the folder of
+// /proc/self/exe), in order. Empty where the folder cannot be read.
+std::vector<std::filesystem::path> courseLessons();
 
 // The interactive loop (window_ui.cpp). Returns the exit code.
 int runWindow(Session&);

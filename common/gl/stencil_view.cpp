@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <string>
+#include <utility>
 
 namespace stencil {
 namespace {
@@ -24,11 +27,15 @@ void fillRect(Image& img, int x0, int y0, int w, int h, Rgb c) {
 }
 
 constexpr std::uint16_t kPlus = 0b000'010'111'010'000;
+constexpr std::uint16_t kOpen = 0b001'010'010'010'001, kClose = 0b100'010'010'010'100;
 
-// Draws digits and '+' with the font scaled by `scale`; returns the width drawn.
+// Draws digits, '+' and parentheses with the font scaled by `scale`; returns the width drawn.
 int drawText(Image& img, int x, int y, const std::string& text, int scale, Rgb c) {
   for (size_t i = 0; i < text.size(); ++i) {
-    const std::uint16_t glyph = text[i] == '+' ? kPlus : kDigits[static_cast<size_t>(text[i] - '0')];
+    const std::uint16_t glyph = text[i] == '+'   ? kPlus
+                                : text[i] == '(' ? kOpen
+                                : text[i] == ')' ? kClose
+                                                 : kDigits[static_cast<size_t>(text[i] - '0')];
     for (int row = 0; row < 5; ++row)
       for (int col = 0; col < 3; ++col)
         if (glyph & (1u << (14 - (row * 3 + col))))
@@ -43,6 +50,47 @@ int drawNumber(Image& img, int x, int y, int number, int scale, Rgb c) {
 
 int textWidth(const std::string& text, int scale) {
   return static_cast<int>(text.size()) * 4 * scale - scale;
+}
+
+}  // namespace
+
+namespace {
+
+using Lab = std::array<float, 3>;
+
+// sRGB bytes to CIELAB (D65 white), and back (out-of-gamut channels clamped).
+float linear(std::uint8_t c) {
+  const float v = static_cast<float>(c) / 255.0f;
+  return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+}
+std::uint8_t encoded(float v) {
+  v = std::clamp(v, 0.0f, 1.0f);
+  const float e = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+  return static_cast<std::uint8_t>(std::lround(255.0f * e));
+}
+constexpr float kWhite[3] = {0.95047f, 1.0f, 1.08883f};
+constexpr float kDelta = 6.0f / 29.0f;
+
+Lab toLab(const Rgb& c) {
+  const float r = linear(c[0]), g = linear(c[1]), b = linear(c[2]);
+  const float xyz[3] = {0.4124f * r + 0.3576f * g + 0.1805f * b, 0.2126f * r + 0.7152f * g + 0.0722f * b,
+                        0.0193f * r + 0.1192f * g + 0.9505f * b};
+  float f[3];
+  for (int i = 0; i < 3; ++i) {
+    const float t = xyz[i] / kWhite[i];
+    f[i] = t > kDelta * kDelta * kDelta ? std::cbrt(t) : t / (3 * kDelta * kDelta) + 4.0f / 29.0f;
+  }
+  return {116.0f * f[1] - 16.0f, 500.0f * (f[0] - f[1]), 200.0f * (f[1] - f[2])};
+}
+
+Rgb fromLab(const Lab& lab) {
+  const float fy = (lab[0] + 16.0f) / 116.0f, f[3] = {fy + lab[1] / 500.0f, fy, fy - lab[2] / 200.0f};
+  float xyz[3];
+  for (int i = 0; i < 3; ++i)
+    xyz[i] = kWhite[i] * (f[i] > kDelta ? f[i] * f[i] * f[i] : 3 * kDelta * kDelta * (f[i] - 4.0f / 29.0f));
+  const float x = xyz[0], y = xyz[1], z = xyz[2];
+  return {encoded(3.2406f * x - 1.5372f * y - 0.4986f * z), encoded(-0.9689f * x + 1.8758f * y + 0.0415f * z),
+          encoded(0.0557f * x - 0.2040f * y + 1.0570f * z)};
 }
 
 }  // namespace
@@ -62,16 +110,79 @@ Rgb stencilColour(std::uint8_t value) {
                                                     {170, 110, 40}}};
   if (value == 0) return {0, 0, 0};
   if (value <= kPalette.size()) return kPalette[value - 1u];
-  // 13..255: from dark violet to white. Red is the value itself, so no two values share a colour.
-  const float t = static_cast<float>(value - 13) / (255.0f - 13.0f);
-  return {value, static_cast<std::uint8_t>(40 + 215 * t), static_cast<std::uint8_t>(140 + 115 * t)};
+  // 13..255: the hue turns by the golden angle from one value to the next and the lightness
+  // cycles through three levels, so neighbours differ in both; the chroma fits most hues in sRGB.
+  const int k = value - 13;
+  const float hue =
+      (std::numbers::pi_v<float> / 180.0f) * (std::fmod(static_cast<float>(k) * 137.508f + 20.0f, 360.0f));
+  static constexpr float kLightness[3] = {62.0f, 78.0f, 48.0f};
+  const float chroma = 36.0f;
+  return fromLab({kLightness[k % 3], chroma * std::cos(hue), chroma * std::sin(hue)});
+}
+
+float colourDistance(const Rgb& a, const Rgb& b) {
+  const Lab p = toLab(a), q = toLab(b);
+  return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                   (p[2] - q[2]) * (p[2] - q[2]));
+}
+
+std::array<Rgb, 256> stencilPictureColours(const std::vector<std::uint64_t>& histogram) {
+  // The colours a clashing value may take instead: every sRGB colour whose channels are multiples
+  // of 255/7, 512 colours spread over the whole gamut.
+  struct Candidate {
+    Rgb rgb;
+    Lab lab;
+  };
+  static const std::vector<Candidate> kCandidates = [] {
+    std::vector<Candidate> all;
+    for (int r = 0; r < 8; ++r)
+      for (int g = 0; g < 8; ++g)
+        for (int b = 0; b < 8; ++b) {
+          const Rgb c{static_cast<std::uint8_t>(r * 255 / 7), static_cast<std::uint8_t>(g * 255 / 7),
+                      static_cast<std::uint8_t>(b * 255 / 7)};
+          all.push_back({c, toLab(c)});
+        }
+    return all;
+  }();
+  const auto distance = [](const Lab& p, const Lab& q) {
+    return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                     (p[2] - q[2]) * (p[2] - q[2]));
+  };
+  std::array<Rgb, 256> colours;
+  for (int v = 0; v < 256; ++v)
+    colours[static_cast<std::size_t>(v)] = stencilColour(static_cast<std::uint8_t>(v));
+  const auto count = [&](int v) {
+    return static_cast<std::size_t>(v) < histogram.size() ? histogram[static_cast<std::size_t>(v)] : 0;
+  };
+  std::vector<int> order;
+  for (int v = 1; v < 256; ++v)
+    if (count(v) > 0) order.push_back(v);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return count(a) > count(b); });
+  std::vector<Lab> given = {toLab(stencilColour(0))};  // black stays 0's, present or not
+  const auto nearest = [&](const Lab& c) {
+    float d = std::numeric_limits<float>::infinity();
+    for (const Lab& g : given) d = std::min(d, distance(c, g));
+    return d;
+  };
+  for (const int v : order) {
+    Rgb& c = colours[static_cast<std::size_t>(v)];
+    Lab lab = toLab(c);
+    if (nearest(lab) < kStencilDistinct) {
+      float best = -1.0f;
+      for (const Candidate& k : kCandidates)
+        if (const float d = nearest(k.lab); d > best) best = d, c = k.rgb, lab = k.lab;
+    }
+    given.push_back(lab);
+  }
+  return colours;
 }
 
 Image stencilRamp(const Image& stencil) {
-  std::array<bool, 256> present{};
-  for (std::uint8_t v : stencil.pixels) present[v] = true;
+  std::vector<std::uint64_t> histogram(256, 0);
+  for (std::uint8_t v : stencil.pixels) ++histogram[v];
+  const std::array<Rgb, 256> colours = stencilPictureColours(histogram);
 
-  const int scale = 2, entryHeight = 7 * scale + 4, swatch = 5 * scale;
+  const int scale = 2, small = 2, entryHeight = 7 * scale + 4, swatch = 5 * scale;
   // Lay the legend entries out first to know how tall the band is.
   struct Entry {
     int value, x, y;
@@ -79,8 +190,10 @@ Image stencilRamp(const Image& stencil) {
   std::vector<Entry> entries;
   int x = 4, y = 4;
   for (int v = 0; v < 256; ++v) {
-    if (!present[static_cast<size_t>(v)]) continue;
-    const int width = swatch + 3 + static_cast<int>(std::to_string(v).size()) * 4 * scale + 8;
+    const std::uint64_t n = histogram[static_cast<size_t>(v)];
+    if (n == 0) continue;
+    const int width = swatch + 3 + textWidth(std::to_string(v), scale) + 3 +
+                      textWidth("(" + std::to_string(n) + ")", small) + 10;
     if (x + width > stencil.width && x > 4) x = 4, y += entryHeight;
     entries.push_back({v, x, y});
     x += width;
@@ -89,16 +202,29 @@ Image stencilRamp(const Image& stencil) {
 
   Image out(stencil.width, stencil.height + band, 4);
   for (int py = 0; py < stencil.height; ++py)
+    for (int px = 0; px < stencil.width; ++px) fillRect(out, px, py, 1, 1, colours[*stencil.at(px, py)]);
+  // A value a handful of pixels hold would be lost among the others: a ring in its colour, 4 pixels
+  // out, around each of its pixels, drawn only over pixels of other values.
+  for (int py = 0; py < stencil.height; ++py)
     for (int px = 0; px < stencil.width; ++px) {
-      const Rgb c = stencilColour(*stencil.at(px, py));
-      fillRect(out, px, py, 1, 1, c);
+      const std::uint8_t v = *stencil.at(px, py);
+      if (histogram[v] >= kRarePixels) continue;
+      for (int d = -4; d <= 4; ++d)
+        for (const auto& [rx, ry] : {std::pair{px + d, py - 4}, std::pair{px + d, py + 4},
+                                     std::pair{px - 4, py + d}, std::pair{px + 4, py + d}})
+          if (rx >= 0 && ry >= 0 && rx < stencil.width && ry < stencil.height && *stencil.at(rx, ry) != v)
+            fillRect(out, rx, ry, 1, 1, colours[v]);
     }
   fillRect(out, 0, stencil.height, out.width, band, {48, 48, 48});
   for (const Entry& e : entries) {
     const int top = stencil.height + e.y;
     fillRect(out, e.x - 1, top - 1, swatch + 2, swatch + 2, {200, 200, 200});  // outline: 0 is black
-    fillRect(out, e.x, top, swatch, swatch, stencilColour(static_cast<std::uint8_t>(e.value)));
-    drawNumber(out, e.x + swatch + 3, top, e.value, scale, {255, 255, 255});
+    fillRect(out, e.x, top, swatch, swatch, colours[static_cast<std::size_t>(e.value)]);
+    const int numberX = e.x + swatch + 3;
+    drawNumber(out, numberX, top, e.value, scale, {255, 255, 255});
+    const std::string n = "(" + std::to_string(histogram[static_cast<std::size_t>(e.value)]) + ")";
+    drawText(out, numberX + textWidth(std::to_string(e.value), scale) + 3, top + 5 * scale - 5 * small, n,
+             small, {170, 170, 170});
   }
   return out;
 }
@@ -219,8 +345,10 @@ Image stencilBitPlanes(const Image& stencil) {
         const bool set = (*stencil.at(px, py) >> bit) & 1u;
         fillRect(out, ox + px, oy + py, 1, 1, set ? Rgb{255, 255, 255} : Rgb{0, 0, 0});
       }
-    fillRect(out, ox + 2, oy + 2, 4 * 2 + 4, 5 * 2 + 4, {200, 40, 40});
-    drawNumber(out, ox + 4, oy + 4, bit, 2, {255, 255, 255});
+    // The label grows with the tile: the window shows the eight tiles at a quarter of their size.
+    const int scale = std::max(2, w / 64);
+    fillRect(out, ox + scale, oy + scale, 5 * scale, 7 * scale, {200, 40, 40});
+    drawNumber(out, ox + 2 * scale, oy + 2 * scale, bit, scale, {255, 255, 255});
   }
   return out;
 }

@@ -8,15 +8,35 @@
 
 namespace stencil {
 
-// The colour a stencil value is shown in: 0 black, 1..12 distinct hues, larger values on
-// a ramp. The same value has the same colour in every picture.
+// The colour a stencil value is shown in: 0 black, 1..12 twelve distinct hues, 13..255 hues a
+// golden angle (137.5 degrees) apart at three lightnesses in turn, so that neighbouring values
+// (13 and 14, 128 and 129) never look alike. Lessons that colour stencil values themselves use it,
+// so the lesson's picture and the stencil picture speak one colour language.
 std::array<std::uint8_t, 3> stencilColour(std::uint8_t value);
 
-// Pseudo-colour picture with a legend band below: a swatch and the value for each value
-// present, in ascending order.
+// How far apart two colours look: the CIE76 colour difference (Euclidean distance in CIELAB,
+// D65 white) of two sRGB byte triples. About 2.3 is just noticeable; kStencilDistinct apart,
+// two flat regions side by side read as different colours at a glance.
+float colourDistance(const std::array<std::uint8_t, 3>&, const std::array<std::uint8_t, 3>&);
+constexpr float kStencilDistinct = 25.0f;
+
+// The colours one stencil picture gives its values, histogram[v] pixels holding v (256 entries):
+// each present value keeps stencilColour(v) unless that lies within kStencilDistinct of black or
+// of a colour already given (values taken 0 first, then by pixel count, most first); such a value
+// gets the sRGB colour (channels multiples of 255/7) farthest from all those already given. Up to
+// 24 present values are all kStencilDistinct apart (tests/unit/test_stencil_view.cpp). Values not
+// present get their stencilColour.
+std::array<std::array<std::uint8_t, 3>, 256> stencilPictureColours(
+    const std::vector<std::uint64_t>& histogram);
+
+// Pseudo-colour picture in stencilPictureColours with a legend band below: for each value present,
+// in ascending order, a swatch, the value and (in brackets, grey) its pixel count. A value held by
+// fewer than kRarePixels pixels is pointed at: a ring in its colour around each of its pixels.
+constexpr std::uint64_t kRarePixels = 16;
 Image stencilRamp(const Image& stencil);
 
-// The eight bit planes side by side (4 x 2 tiles, bit 0 top left): white where set.
+// The eight bit planes side by side (4 x 2 tiles, bit 0 top left): white where set, each tile
+// labelled with its bit in digits 1/64 of the tile's width wide (at least 2 pixels a dot).
 Image stencilBitPlanes(const Image& stencil);
 
 // Depth complexity's colours (lesson 13): a count of 0 is black, 1..top run along one ramp from

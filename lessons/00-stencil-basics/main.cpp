@@ -22,6 +22,7 @@
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
 #include "gl/shader.h"
+#include "gl/stencil_view.h"
 
 using namespace stencil;
 
@@ -191,12 +192,11 @@ class StencilBasics final : public Lesson {
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    const std::pair<GLint, glm::vec4> outcomes[] = {{0x81, {0.9f, 0.2f, 0.2f, 0.6f}},    // sfail: red
-                                                    {2, {0.95f, 0.8f, 0.1f, 0.6f}},      // dpfail: yellow
-                                                    {0xFE, {0.2f, 0.85f, 0.3f, 0.6f}}};  // dppass: green
-    for (const auto& [value, colour] : outcomes) {
-      glStencilFunc(GL_EQUAL, value, 0xFF);  // only the pixels holding this outcome
-      drawFullScreen(colour);
+    // Each outcome in the colour the stencil picture gives its value (--stencil-out, Tab).
+    for (const GLint value : {0x81, 2, 0xFE}) {  // sfail, dpfail, dppass
+      glStencilFunc(GL_EQUAL, value, 0xFF);      // only the pixels holding this outcome
+      const auto c = stencilColour(static_cast<std::uint8_t>(value));
+      drawFullScreen({c[0] / 255.0f, c[1] / 255.0f, c[2] / 255.0f, 0.8f});
     }
     glDisable(GL_BLEND);
     f.pass("show");
@@ -244,6 +244,13 @@ class StencilBasics final : public Lesson {
 
   // ---- drawing helpers (no stencil state in here) -----------------------------------------
   void drawScene(const Frame& f, bool night) {
+    // The sky first, behind everything: bright by day, the clear colour by night, so the keyhole
+    // shows day in its sky too. It neither tests nor writes depth: the scene covers it.
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    drawFullScreen(night ? glm::vec4(0.05f, 0.06f, 0.1f, 1.0f) : glm::vec4(0.55f, 0.72f, 0.92f, 1.0f));
+    glDepthMask(GL_TRUE);
+    glEnable(GL_DEPTH_TEST);
     const float t = static_cast<float>(f.time);
     glm::mat4 torus = glm::translate(glm::mat4(1), {-0.3f, 0.9f, 0.0f});
     torus = glm::rotate(torus, 0.7f * t, {0, 1, 0});

@@ -53,7 +53,9 @@ LessonInfo lessonInfo() {
 
 constexpr glm::vec4 kSky{0.55f, 0.65f, 0.8f, 1.0f};
 constexpr glm::vec4 kLight{1.5f, 4.5f, 2.5f, 1.0f};
-constexpr GLint kMirrorDrawn = 1;  // not used by the algorithm: a record of where the mirror is
+constexpr GLint kMirrorDrawn = 1;
+constexpr float kAboveFloor = 0.01f;  // world units: a base this far up reflects this far down  // not used
+                                      // by the algorithm: a record of where the mirror is
 
 // The free-standing mirror: standing on the floor at z = -1.5, leaning back 8 degrees and
 // turned 20 degrees about the vertical, so its plane is no coordinate plane.
@@ -157,8 +159,10 @@ class PlanarReflection final : public Lesson {
     drawLit(f, torus_, torus, {0.9f, 0.45f, 0.2f}, 48.0f, reflect);
     drawLit(f, sphere_, glm::translate(glm::mat4(1), {1.1f, 0.35f, 1.0f}), {0.25f, 0.45f, 0.9f}, 64.0f,
             reflect);
-    drawLit(f, cone_, glm::translate(glm::mat4(1), {-1.2f, 0.35f, 0.6f}), {0.85f, 0.2f, 0.25f}, 32.0f,
-            reflect);
+    // The cone's base stands a hair above the floor: a base in the floor's plane would reflect onto
+    // the plane itself, where the floor's depth test against it is a toss-up (a spiky hole).
+    drawLit(f, cone_, glm::translate(glm::mat4(1), {-1.2f, 0.35f + kAboveFloor, 0.6f}), {0.85f, 0.2f, 0.25f},
+            32.0f, reflect);
     if (!standing) return;
     drawLit(f, floor_, glm::mat4(1), {0.72f, 0.7f, 0.62f}, 16.0f, reflect);
     const bool reflected = reflect != glm::mat4(1);

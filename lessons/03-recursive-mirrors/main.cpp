@@ -227,7 +227,7 @@ class RecursiveMirrors final : public Lesson {
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);  // drawing the scene changes no level
     drawScene(f, l);
     f.count("scene_renderings");
-    f.pass(l.depth == 0 ? "scene" : "reflection");
+    f.pass(l.depth == 0 ? "scene" : "reflection", l.depth == 0 ? "" : "level " + std::to_string(l.depth));
     for (const Level& c : childrenOf(f, l)) {
       const Mirror& m = mirrors_[static_cast<std::size_t>(c.mirror)];
       const Program& p = programFor(l);

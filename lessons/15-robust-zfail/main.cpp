@@ -273,6 +273,7 @@ class RobustZFail final : public Lesson {
 
     for (std::size_t i = 0; i < lights.size(); ++i) {
       buildVolumes(f, models, lights[i].light.position, i);
+      const std::string which = "light " + std::to_string(lights[i].index);  // the passes say whose they are
       if (f.on("shadow") && lightBuried(scene_, models, solids_, lights[i].light.position)) {
         // A light inside a solid (outside the room the eye is in) lights nothing the eye sees:
         // its picture is all shadow, a count of 1 everywhere, and it adds no light.
@@ -280,9 +281,9 @@ class RobustZFail final : public Lesson {
         glClear(GL_STENCIL_BUFFER_BIT);
         glClearStencil(0);
         f.count("lights_buried");
-        f.pass("volumes");
+        f.pass("volumes", which);
         f.shadowMask("light-" + std::to_string(lights[i].index));
-        f.pass("lit");
+        f.pass("lit", which);
         continue;
       }
       if (f.on("shadow")) {
@@ -320,7 +321,7 @@ class RobustZFail final : public Lesson {
           f.count("count_groups", static_cast<std::uint64_t>(plan.groups));
         }
         glDisable(GL_DEPTH_CLAMP);
-        f.pass("volumes");
+        f.pass("volumes", which);
         f.shadowMask("light-" + std::to_string(lights[i].index));  // under --mask-out: this light's mask
 
         // 3. This light, added where its count is zero.
@@ -336,7 +337,7 @@ class RobustZFail final : public Lesson {
       glDisable(GL_BLEND);
       glDisable(GL_STENCIL_TEST);
       glDepthFunc(less_);
-      f.pass("lit");
+      f.pass("lit", which);
     }
     glDepthMask(GL_TRUE);
 

@@ -352,6 +352,7 @@ class FastRobustShadows final : public Lesson {
     for (std::size_t k = 0; k < order.size(); ++k) {
       const SceneLight& light = scene_.lights[static_cast<std::size_t>(order[k])];
       const bool checked = k + 1 == order.size();
+      const std::string which = "light " + std::to_string(order[k]);  // the passes say whose they are
       const LightClip clip =
           lightClip(light.position, light.radius, f.on("bounds"), f.view, f.projection, f.size);
       if (clip.offScreen()) {  // its bounds are off screen: it adds nothing
@@ -371,7 +372,7 @@ class FastRobustShadows final : public Lesson {
         glClear(GL_STENCIL_BUFFER_BIT);
         glClearStencil(0);
         f.count("lights_buried");
-        endPass(f, "shadows");
+        endPass(f, "shadows", which);
         f.shadowMask("light-" + std::to_string(order[k]));
         target_->bind();  // reading the mask may have bound another framebuffer
         continue;
@@ -388,12 +389,12 @@ class FastRobustShadows final : public Lesson {
       f.count(depthBounds ? "depth_bounds_used" : "depth_bounds_skipped");
       if (f.on("shadow")) drawShadows(f, light, clip, nearRect, frustum, checked);
       if (depthBounds) glDisable(GL_DEPTH_BOUNDS_TEST_EXT);
-      endPass(f, "shadows");
+      endPass(f, "shadows", which);
       f.shadowMask("light-" + std::to_string(order[k]));
       target_->bind();                       // reading the mask may have bound another framebuffer
       if (f.on("fill") && f.on("shadow")) {  // the fill the stencil test saw, for --stats
         drawVolumeFill();
-        endPass(f, "volume-fill");
+        endPass(f, "volume-fill", which);
       }
 
       glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);  // the light's colour is added
@@ -410,7 +411,7 @@ class FastRobustShadows final : public Lesson {
       glDisable(GL_SCISSOR_TEST);
       glDepthFunc(less_);
       glDepthMask(GL_TRUE);
-      endPass(f, "illumination");
+      endPass(f, "illumination", which);
     }
 
     // Per caster, for the light drawn last: its case (0 culled) and what its volume cost.
@@ -510,9 +511,9 @@ class FastRobustShadows final : public Lesson {
     return order;
   }
 
-  void endPass(Frame& f, const char* name) {
+  void endPass(Frame& f, const char* name, const std::string& detail = {}) {
     target_->copyTo(framework_);
-    f.pass(name);
+    f.pass(name, detail);
     target_->bind();  // the recorder binds the framework's framebuffer after each pass
   }
 

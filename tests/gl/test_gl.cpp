@@ -114,6 +114,30 @@ TEST_F(Gl, RecorderCountsDrawsTrianglesAndFragments) {
   EXPECT_EQ(recorder.snapshots()[0].colour.at(10, 10)[0], 255);
 }
 
+// The passes are named as they ran: a detail the lesson gives goes beside the name, a name the
+// frame repeats without one is numbered, and a snapshot carries its pass's label and index.
+TEST_F(Gl, PassesAreLabelledAsTheyRan) {
+  Framebuffer fb(16, 16);
+  PassRecorder recorder({"ambient", "shadows", "reflection", "overlay"}, fb, context->features());
+  fb.bind();
+  recorder.beginFrame({.measure = false, .captureAll = false, .captureOnly = 3});
+  recorder.pass("ambient");
+  recorder.pass("shadows", "light 2");
+  recorder.pass("shadows", "light 0");
+  recorder.pass("reflection");
+  recorder.pass("reflection");
+  recorder.pass("overlay");
+  recorder.endFrame();
+  std::vector<std::string> labels;
+  for (const PassStats& p : recorder.passStats()) labels.push_back(p.label);
+  EXPECT_EQ(labels, (std::vector<std::string>{"ambient", "shadows (light 2)", "shadows (light 0)",
+                                              "reflection #1", "reflection #2", "overlay"}));
+  EXPECT_EQ(recorder.passStats()[1].name, "shadows");
+  ASSERT_EQ(recorder.snapshots().size(), 1u);
+  EXPECT_EQ(recorder.snapshots()[0].index, 3u);
+  EXPECT_EQ(recorder.snapshots()[0].label, "reflection #1");
+}
+
 // A new framebuffer's first measured frame: its GPU time is a real figure that fits inside the
 // pass's CPU wall time (which ends after glFinish), not the timer's raw timestamp.
 TEST_F(Gl, TheFirstFramesGpuTimeFitsInsideItsCpuTime) {

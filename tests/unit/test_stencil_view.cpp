@@ -1,6 +1,9 @@
 // The stencil inspector's pictures.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <numeric>
+#include <random>
 #include <set>
 
 #include "gl/stencil_view.h"
@@ -12,6 +15,70 @@ TEST(StencilView, ZeroIsBlackAndSmallValuesAreDistinct) {
   std::set<std::array<std::uint8_t, 3>> seen;
   for (int v = 0; v <= 255; ++v) seen.insert(stencilColour(static_cast<std::uint8_t>(v)));
   EXPECT_EQ(seen.size(), 256u);  // every value has its own colour
+}
+
+// Neighbouring values, and every value and 0, look different at a glance (lesson 08's 13..20 and
+// lesson 09's floor tag 128 and its shadow 129 once shared one navy).
+TEST(StencilView, NeighbouringValuesAreDistinct) {
+  for (int v = 1; v < 256; ++v) {
+    const auto c = stencilColour(static_cast<std::uint8_t>(v));
+    EXPECT_GE(colourDistance(c, stencilColour(0)), kStencilDistinct) << v << " and 0";
+    if (v < 255) {
+      EXPECT_GE(colourDistance(c, stencilColour(static_cast<std::uint8_t>(v + 1))), kStencilDistinct)
+          << v << " and " << v + 1;
+    }
+  }
+}
+
+// Every value a picture holds has a colour kStencilDistinct from every other value it holds, for
+// any 24 values or fewer; with no clash each keeps its own colour.
+TEST(StencilView, EveryPresentValueIsDistinctFromEveryOther) {
+  const auto check = [](const std::vector<int>& values) {
+    std::vector<std::uint64_t> histogram(256, 0);
+    for (std::size_t i = 0; i < values.size(); ++i) histogram[static_cast<std::size_t>(values[i])] += 100 + i;
+    const auto colours = stencilPictureColours(histogram);
+    float least = 1e9f;
+    for (const int a : values)
+      for (const int b : values)
+        if (a < b)
+          least = std::min(least, colourDistance(colours[static_cast<std::size_t>(a)],
+                                                 colours[static_cast<std::size_t>(b)]));
+    return least;
+  };
+  EXPECT_GE(check({0, 13, 14, 15, 16, 17, 18, 19, 20}), kStencilDistinct);
+  EXPECT_GE(check({0, 128, 129}), kStencilDistinct);
+  std::mt19937 random(18);
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::vector<int> all(256);
+    std::iota(all.begin(), all.end(), 0);
+    std::shuffle(all.begin(), all.end(), random);
+    const auto n = static_cast<std::size_t>(2 + trial % 23);
+    const std::vector<int> values(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(n));
+    ASSERT_GE(check(values), kStencilDistinct) << n << " values, trial " << trial;
+  }
+  // Lesson 00's ops values keep their own colours, the ones the lesson paints them in.
+  std::vector<std::uint64_t> ops(256, 0);
+  ops[0] = 1000, ops[2] = 300, ops[129] = 5000, ops[254] = 700;
+  const auto colours = stencilPictureColours(ops);
+  for (const int v : {0, 2, 129, 254})
+    EXPECT_EQ(colours[static_cast<std::size_t>(v)], stencilColour(static_cast<std::uint8_t>(v))) << v;
+}
+
+// The legend gives each value's pixel count, and a value a few pixels hold is ringed in its colour.
+TEST(StencilView, RareValuesAreRingedAndCounted) {
+  Image s(40, 30, 1);
+  std::fill(s.pixels.begin(), s.pixels.end(), std::uint8_t{1});
+  *s.at(20, 15) = 129;
+  const Image pic = stencilRamp(s);
+  const auto c = stencilColour(129);
+  const auto at = [&](int x, int y) {
+    return std::array<std::uint8_t, 3>{pic.at(x, y)[0], pic.at(x, y)[1], pic.at(x, y)[2]};
+  };
+  EXPECT_EQ(at(20, 15), c);
+  EXPECT_EQ(at(24, 15), c);  // the ring, 4 pixels out
+  EXPECT_EQ(at(20, 11), c);
+  EXPECT_EQ(at(22, 15), stencilColour(1));  // inside the ring: the value around it
+  EXPECT_EQ(at(10, 5), stencilColour(1));
 }
 
 TEST(StencilView, RampShowsEachPixelsColourAndAddsALegendBand) {
