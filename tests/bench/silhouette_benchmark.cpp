@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/dual_silhouette.h"
 #include "geometry/scene.h"
 #include "geometry/shadow_volume.h"
 #include "geometry/shapes.h"
@@ -67,6 +68,13 @@ const SilhouetteCaster& silhouetteCaster(const std::string& shape, const Size& s
     const PreparedCaster& c = caster(shape, size);
     slot = std::make_unique<SilhouetteCaster>(prepareSilhouettes(c.mesh, c.adjacency));
   }
+  return *slot;
+}
+
+const DualSilhouettes& dualTree(const std::string& shape, const Size& size) {
+  static std::map<std::string, std::unique_ptr<DualSilhouettes>> cache;
+  auto& slot = cache[shape + size.name];
+  if (!slot) slot = std::make_unique<DualSilhouettes>(silhouetteCaster(shape, size));
   return *slot;
 }
 
@@ -163,6 +171,29 @@ void prepare(benchmark::State& state, const std::string& shape, const Size& size
     benchmark::DoNotOptimize(s.nx.data());
   }
   state.counters["triangles"] = static_cast<double>(c.mesh.triangleCount());
+}
+
+// Wallner's dual space: the hextree's query for the same light (the tree built once, outside).
+void dual(benchmark::State& state, const std::string& shape, const Size& size) {
+  const DualSilhouettes& tree = dualTree(shape, size);
+  std::vector<SilhouetteEdge> silhouette;
+  for (auto _ : state) {
+    tree.query(light, silhouette);
+    benchmark::DoNotOptimize(silhouette.data());
+  }
+  state.counters["triangles"] = static_cast<double>(silhouetteCaster(shape, size).faceCount());
+  state.counters["silhouette_edges"] = static_cast<double>(silhouette.size());
+  state.counters["cells_visited"] = static_cast<double>(tree.lastQuery().cellsVisited);
+  state.counters["edges_tested"] = static_cast<double>(tree.lastQuery().edgesTested);
+}
+
+void dualPrepare(benchmark::State& state, const std::string& shape, const Size& size) {
+  const SilhouetteCaster& c = silhouetteCaster(shape, size);
+  for (auto _ : state) {
+    DualSilhouettes tree(c);
+    benchmark::DoNotOptimize(&tree);
+  }
+  state.counters["triangles"] = static_cast<double>(c.faceCount());
 }
 
 void scanPrepared(benchmark::State& state, const std::string& shape, const Size& size) {
@@ -360,9 +391,17 @@ int main(int argc, char** argv) {
       const Size& size = sizes[i];
       const std::string key = std::string("/") + shape + "/" + size.name;
       const std::pair<const char*, void (*)(benchmark::State&, const std::string&, const Size&)> runs[] = {
-          {"mesh", meshVersion}, {"prepared", prepared}, {"scan", scan},     {"scan-prepared", scanPrepared},
-          {"faces", faces},      {"edges", edges},       {"facing", facing}, {"edgepass", edgepass},
-          {"prepare", prepare}};
+          {"mesh", meshVersion},
+          {"prepared", prepared},
+          {"scan", scan},
+          {"scan-prepared", scanPrepared},
+          {"faces", faces},
+          {"edges", edges},
+          {"facing", facing},
+          {"edgepass", edgepass},
+          {"prepare", prepare},
+          {"dual", dual},
+          {"dual-prepare", dualPrepare}};
       for (const auto& [name, run] : runs)
         benchmark::RegisterBenchmark((name + key).c_str(), run, std::string(shape), size);
       if (quick && !closedLoops(caster(shape, size))) {
