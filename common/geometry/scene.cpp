@@ -695,14 +695,49 @@ void readCamera(LineReader& line, SceneCamera& camera) {
     line.fail("expected the eye off the vertical through the target (the camera's up is +y)");
 }
 
+// `light sun LAT LON YYYY-MM-DD HH:MM ZONE`: the place, the local date and clock, and the zone's
+// hours from UTC; the light is directional, towards where the sun then stands (solar.h).
+void readSun(LineReader& line, SceneLight& light) {
+  SunLight sun;
+  sun.place.latitudeDeg = line.number("the sun's latitude in degrees (north positive)");
+  if (std::abs(sun.place.latitudeDeg) > 90.0)
+    line.fail("expected a latitude of -90 to 90 degrees, got " +
+              LineReader::format(float(sun.place.latitudeDeg)));
+  sun.place.longitudeDeg = line.number("the sun's longitude in degrees (east positive)");
+  if (std::abs(sun.place.longitudeDeg) > 180.0)
+    line.fail("expected a longitude of -180 to 180 degrees, got " +
+              LineReader::format(float(sun.place.longitudeDeg)));
+  const std::string date = line.word("the date (YYYY-MM-DD)"), clock = line.word("the local time (HH:MM)");
+  const std::optional<CivilTime> time = parseCivilTime(date, clock);
+  if (!time) line.fail("expected a date YYYY-MM-DD and a local time HH:MM, got " + quote(date + " " + clock));
+  sun.time = *time;
+  // The zone as it is usually written, with its sign: +2, -7, +5.5 (from_chars takes no '+').
+  const std::string zone = line.word("the time zone in hours from UTC (+2 for CEST)");
+  const std::string digits = zone.starts_with('+') ? zone.substr(1) : zone;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), sun.time.zoneHours);
+  if (digits.empty() || (digits[0] == '-' && zone[0] == '+') || ec != std::errc() ||
+      end != digits.data() + digits.size() || !std::isfinite(sun.time.zoneHours))
+    line.fail("expected the time zone in hours from UTC (+2 for CEST), got " + quote(zone));
+  if (const std::string problem = civilTimeProblem(sun.time); !problem.empty())
+    line.fail("expected a date and time that exist: " + problem);
+  const SunPosition p = sunPosition(sun.place, sun.time);
+  if (p.elevationDeg <= 0.0)
+    line.fail("the sun is below the horizon then (elevation " + LineReader::format(float(p.elevationDeg)) +
+              " degrees): it lights nothing");
+  light.position = glm::vec4(sunDirection(p.elevationDeg, p.azimuthDeg), 0.0f);
+  light.sun = sun;
+}
+
 void readLight(LineReader& line, SceneLight& light) {
-  const std::string type = line.word("the light's type (point or directional)");
+  const std::string type = line.word("the light's type (point, directional or sun)");
   if (type == "point")
     light.position = glm::vec4(line.vec3("the light's position"), 1.0f);
   else if (type == "directional")
     light.position = glm::vec4(line.direction("the direction towards the light"), 0.0f);
+  else if (type == "sun")
+    readSun(line, light);
   else
-    line.fail("expected the light's type (point or directional), got " + quote(type));
+    line.fail("expected the light's type (point, directional or sun), got " + quote(type));
   std::set<std::string> seen;
   while (!line.done()) {
     const std::string key = line.word("a light setting");

@@ -12,6 +12,7 @@
 #include <functional>
 #include <glm/glm.hpp>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -20,6 +21,7 @@
 #include "geometry/adjacency.h"
 #include "geometry/mesh.h"
 #include "geometry/shadow_oracle.h"
+#include "geometry/solar.h"
 
 namespace stencil {
 
@@ -64,12 +66,20 @@ struct PreparedCaster {
 // Throws std::invalid_argument for an invalid mesh or a position that is not finite.
 PreparedCaster prepareCaster(const Mesh& mesh);
 
+// A sun light's place and clock (`light sun` in a scene file): its position is the direction
+// towards the sun then (solar.h; world +y up, -z north, +x east), at w = 0.
+struct SunLight {
+  SitePlace place;
+  CivilTime time;
+};
+
 struct SceneLight {
   glm::vec4 position{0.0f, 5.0f, 0.0f, 1.0f};  // w = 1 a point (world), w = 0 the direction towards the light
   glm::vec3 color{1.0f};
   // A point light's bounds: its light falls to zero at this distance (attenuation), so nothing
   // outside the sphere needs its shadow. Infinite for a light without bounds.
   float radius = std::numeric_limits<float>::infinity();
+  std::optional<SunLight> sun{};  // set for a sun light, which is directional
 };
 
 struct SceneObject {

@@ -1,6 +1,7 @@
 #include "geometry/shadow_volume.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
@@ -8,6 +9,10 @@
 #include <string>
 
 #include "geometry/weld.h"
+
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 namespace stencil {
 
@@ -57,6 +62,106 @@ std::vector<SilhouetteEdge> silhouetteEdges(const EdgeAdjacency& adjacency, cons
     if (lit1 && !lit0) silhouette.push_back({e.v1, e.v0});  // face1 walks v1 -> v0
   }
   return silhouette;
+}
+
+SilhouetteCaster prepareSilhouettes(const Mesh& mesh, const EdgeAdjacency& adjacency) {
+  validateMesh(mesh);
+  SilhouetteCaster c;
+  const std::size_t faces = mesh.triangleCount();
+  for (auto* v : {&c.nx, &c.ny, &c.nz, &c.ax, &c.ay, &c.az}) v->resize(faces);
+  for (std::size_t t = 0; t < faces; ++t) {
+    const glm::vec3 n = faceNormal(mesh, t);  // as facing() computes it
+    const glm::vec3& a = mesh.positions[mesh.indices[3 * t]];
+    c.nx[t] = n.x, c.ny[t] = n.y, c.nz[t] = n.z;
+    c.ax[t] = a.x, c.ay[t] = a.y, c.az[t] = a.z;
+  }
+  const auto border = static_cast<std::int32_t>(faces);
+  c.edgeFaces.reserve(adjacency.edges.size());
+  c.edgeEnds.reserve(adjacency.edges.size());
+  for (const Edge& e : adjacency.edges) {
+    if (e.face0 < 0 || static_cast<std::size_t>(e.face0) >= faces || e.face1 < -1 ||
+        (e.face1 >= 0 && static_cast<std::size_t>(e.face1) >= faces))
+      throw std::invalid_argument("prepareSilhouettes: an edge names a face past the mesh's " +
+                                  std::to_string(faces) + " triangles");
+    c.edgeFaces.push_back({e.face0, e.face1 < 0 ? border : e.face1});
+    c.edgeEnds.push_back({e.v0, e.v1});
+  }
+  return c;
+}
+
+void facesLight(const SilhouetteCaster& c, const glm::vec4& light, std::vector<std::uint8_t>& lit) {
+  const std::size_t faces = c.faceCount();
+  lit.resize(faces + 1);
+  const float lx = light.x, ly = light.y, lz = light.z, lw = light.w;
+  const float *nx = c.nx.data(), *ny = c.ny.data(), *nz = c.nz.data();
+  const float *ax = c.ax.data(), *ay = c.ay.data(), *az = c.az.data();
+  std::uint8_t* out = lit.data();
+  // dot(n, L.xyz - L.w * a) evaluated as glm does it, (x + y) + z with no reassociation: the same
+  // rounding in every SSE lane as in the scalar loop and in facing().
+  std::size_t t = 0;
+#ifdef __SSE2__
+  const __m128 Lx = _mm_set1_ps(lx), Ly = _mm_set1_ps(ly), Lz = _mm_set1_ps(lz), Lw = _mm_set1_ps(lw);
+  const __m128 zero = _mm_setzero_ps();
+  const auto facing4 = [&](std::size_t i) {  // 0xffffffff where the face faces the light, else 0
+    const __m128 x = _mm_mul_ps(_mm_loadu_ps(nx + i), _mm_sub_ps(Lx, _mm_mul_ps(Lw, _mm_loadu_ps(ax + i))));
+    const __m128 y = _mm_mul_ps(_mm_loadu_ps(ny + i), _mm_sub_ps(Ly, _mm_mul_ps(Lw, _mm_loadu_ps(ay + i))));
+    const __m128 z = _mm_mul_ps(_mm_loadu_ps(nz + i), _mm_sub_ps(Lz, _mm_mul_ps(Lw, _mm_loadu_ps(az + i))));
+    return _mm_castps_si128(_mm_cmpgt_ps(_mm_add_ps(_mm_add_ps(x, y), z), zero));
+  };
+  for (; t + 16 <= faces; t += 16) {  // sixteen faces' masks packed into sixteen 0/1 bytes
+    const __m128i low = _mm_packs_epi32(facing4(t), facing4(t + 4));
+    const __m128i high = _mm_packs_epi32(facing4(t + 8), facing4(t + 12));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + t),
+                     _mm_and_si128(_mm_packs_epi16(low, high), _mm_set1_epi8(1)));
+  }
+#endif
+  for (; t < faces; ++t) {
+    const float f = nx[t] * (lx - lw * ax[t]) + ny[t] * (ly - lw * ay[t]) + nz[t] * (lz - lw * az[t]);
+    out[t] = f > 0.0f ? 1 : 0;
+  }
+  out[faces] = 2;
+}
+
+void silhouetteEdges(const SilhouetteCaster& c, const std::vector<std::uint8_t>& lit,
+                     std::vector<SilhouetteEdge>& out) {
+  if (lit.size() != c.faceCount() + 1)
+    throw std::invalid_argument("silhouetteEdges: " + std::to_string(lit.size()) + " flags for " +
+                                std::to_string(c.faceCount()) + " faces and the border's");
+  out.clear();
+  const std::uint8_t* flag = lit.data();
+  const SilhouetteCaster::EdgeFaces* faces = c.edgeFaces.data();
+  const std::size_t edges = c.edgeFaces.size();
+  // Both faces lit or both not: inside the light cap or on the dark side. One lit face (or a
+  // border's one face, against its flag 2): a possible silhouette edge, walked the lit face's way.
+  const auto differs = [&](std::size_t k) -> std::uint32_t {
+    return flag[static_cast<std::uint32_t>(faces[k].face0)] !=
+           flag[static_cast<std::uint32_t>(faces[k].face1)];
+  };
+  const auto emit = [&](std::size_t k) {
+    const SilhouetteEdge& ends = c.edgeEnds[k];
+    out.push_back(flag[static_cast<std::uint32_t>(faces[k].face0)] == 1 ? ends
+                                                                        : SilhouetteEdge{ends.v1, ends.v0});
+  };
+  // Most edges are not on the silhouette: thirty-two edges' tests go into the bits of a mask
+  // without a branch, and only the set bits are visited, in order.
+  std::size_t e = 0;
+  for (; e + 32 <= edges; e += 32) {
+    std::uint32_t mask = 0;
+    for (std::uint32_t k = 0; k < 32; k += 4)
+      mask |= (differs(e + k) | differs(e + k + 1) << 1 | differs(e + k + 2) << 2 | differs(e + k + 3) << 3)
+              << k;
+    for (; mask != 0; mask &= mask - 1) emit(e + static_cast<std::size_t>(std::countr_zero(mask)));
+  }
+  for (; e < edges; ++e)
+    if (differs(e)) emit(e);
+}
+
+std::vector<SilhouetteEdge> silhouetteEdges(const SilhouetteCaster& caster, const glm::vec4& light) {
+  std::vector<std::uint8_t> lit;
+  std::vector<SilhouetteEdge> out;
+  facesLight(caster, light, lit);
+  silhouetteEdges(caster, lit, out);
+  return out;
 }
 
 std::array<int, 6> extrudedQuadCorners(const glm::vec3& a, const glm::vec3& b) {

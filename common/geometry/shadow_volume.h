@@ -43,6 +43,49 @@ struct SilhouetteEdge {
 // meaningful silhouette, check the adjacency report first.
 std::vector<SilhouetteEdge> silhouetteEdges(const EdgeAdjacency& adjacency, const std::vector<bool>& lit);
 
+// ---- silhouettes at memory speed --------------------------------------------------------------
+//
+// facesLight gathers three indices and three positions per triangle and recomputes its normal on
+// every call; silhouetteEdges reads 16-byte edges and two bit flags through bounds checks. A caster
+// that is drawn from many lights or frames does the arithmetic that depends only on the mesh once:
+// SilhouetteCaster keeps each face's normal and first corner (the facing test's inputs) in
+// structure-of-arrays order, and each edge's two faces apart from its two vertices. The facing pass
+// then streams 24 bytes per face, the edge pass 8 bytes per edge plus a one-byte flag per face it
+// names, and an edge's vertices are read only when it is a possible silhouette edge.
+
+// A caster's facing test and edges, prepared once. Built from a mesh and its adjacency (welded
+// vertices, as silhouetteEdges needs). The normal is cross(b - a, c - a) and the test
+// dot(normal, L.xyz - L.w * a) > 0, the same float operations in the same order as facesLight,
+// so the flags, and the edges, are bit for bit the ones the Mesh overloads give.
+struct SilhouetteCaster {
+  std::vector<float> nx, ny, nz;  // per face: its normal, not normalised (mesh units squared)
+  std::vector<float> ax, ay, az;  // per face: its first corner (mesh units)
+  struct EdgeFaces {
+    std::int32_t face0, face1;  // face1 = faceCount() for a border edge (see litFlags)
+  };
+  std::vector<EdgeFaces> edgeFaces;      // per adjacency edge, in the adjacency's order
+  std::vector<SilhouetteEdge> edgeEnds;  // per adjacency edge: v0 -> v1 as face0 walks it
+  std::size_t faceCount() const { return nx.size(); }
+};
+// Throws std::invalid_argument for an invalid mesh (validateMesh) or an adjacency that names a
+// face the mesh does not have.
+SilhouetteCaster prepareSilhouettes(const Mesh& mesh, const EdgeAdjacency& adjacency);
+
+// The facing pass: lit[t] = 1 when face t faces the light (strictly, as facesLight), else 0;
+// lit gets faceCount() + 1 entries, the last one 2, which a border edge's face1 names, so that it
+// differs from its one face whichever way that faces. `lit` is reused storage: no allocation
+// once it is large enough.
+void facesLight(const SilhouetteCaster& caster, const glm::vec4& light, std::vector<std::uint8_t>& lit);
+
+// The edge pass: the possible silhouette edges for flags from the facing pass above, appended to
+// `out` after clearing it, in the order and direction silhouetteEdges(adjacency, lit) gives.
+// Throws std::invalid_argument when lit does not have faceCount() + 1 entries.
+void silhouetteEdges(const SilhouetteCaster& caster, const std::vector<std::uint8_t>& lit,
+                     std::vector<SilhouetteEdge>& out);
+
+// Both passes, for one light: the same edges as silhouetteEdges(adjacency, facesLight(mesh, light)).
+std::vector<SilhouetteEdge> silhouetteEdges(const SilhouetteCaster& caster, const glm::vec4& light);
+
 // Homogeneous triangles, three vertices each, counter-clockwise seen from outside the volume.
 struct ShadowVolume {
   std::vector<glm::vec4> vertices;

@@ -205,7 +205,9 @@ void Session::renderFrame(double time, FrameRequest request) {
   recorder->beginFrame(request);
   Frame frame(time, {framebuffer->width(), framebuffer->height()}, camera, options, *recorder,
               context->features(), reversedDepth);
-  if (commandLine.maskOut && saveShadowMasks)
+  if (shadowMaskHook)
+    frame.setShadowMaskWriter(shadowMaskHook);
+  else if (commandLine.maskOut && saveShadowMasks)
     frame.setShadowMaskWriter([this](std::string_view name) {
       const Image stencil = framebuffer->readStencil();
       Image mask(stencil.width, stencil.height, 1);
@@ -412,6 +414,11 @@ void checkOutputs(const CommandLine& cl, const LessonInfo& info) {
     files.push_back({"--stencil-out", *cl.stencilOut});
     files.push_back({"--stencil-out's raw values", rawPathBeside(*cl.stencilOut)});
   }
+  if (cl.shadowHours) {
+    checkPictureOutput(*cl.shadowHours, "--shadow-hours", true);
+    files.push_back({"--shadow-hours", *cl.shadowHours});
+    files.push_back({"--shadow-hours' raw counts", rawPathBeside(*cl.shadowHours)});
+  }
   if (cl.oracle) {
     checkPictureOutput(*cl.oracle, "--oracle", true);
     files.push_back({"--oracle", *cl.oracle});
@@ -456,6 +463,77 @@ int runHeadless(Session& s) {
     if (frames > 1 && !cl.quiet && (i + 1) % 60 == 0) std::cerr << "frame " << i + 1 << "/" << frames << "\n";
   }
   return finishRun(s, s.framebuffer->readColour(), s.framebuffer->readStencil(), frameMs);
+}
+
+// --shadow-hours: the scene's (first) sun light moved through the span, the lesson made anew with
+// the sun where it stands at each step and one frame rendered; the sun's shadow mask (the stencil
+// once its shadow is in it: Frame::shadowMask("light-<i>")) counted per pixel. A step with the sun
+// at or below the horizon leaves every pixel in shadow. Wallner's shadow profile, section 8.
+int runShadowHours(Session& s, Scene& scene, const LessonFactory& make) {
+  const CommandLine& cl = s.commandLine;
+  std::size_t sunIndex = scene.lights.size();
+  for (std::size_t i = 0; i < scene.lights.size() && sunIndex == scene.lights.size(); ++i)
+    if (scene.lights[i].sun) sunIndex = i;
+  const SunLight sun = *scene.lights[sunIndex].sun;
+  const std::string maskName = "light-" + std::to_string(sunIndex);
+  const int width = s.framebuffer->width(), height = s.framebuffer->height();
+  std::vector<std::uint16_t> counts(static_cast<std::size_t>(width) * height, 0);
+  int steps = 0;
+  double totalMs = 0.0;
+  for (int minutes = cl.shadowFrom; minutes <= cl.shadowTo; minutes += cl.shadowStep, ++steps) {
+    CivilTime time = sun.time;
+    time.hour = minutes / 60;
+    time.minute = minutes % 60;
+    time.second = 0.0;
+    char clock[24];
+    std::snprintf(clock, sizeof clock, "%02d%02d", time.hour, time.minute);
+    const SunPosition p = sunPosition(sun.place, time);
+    Image mask(width, height, 1);  // 255 lit, 0 in shadow, as --mask-out writes them
+    double ms = 0.0;
+    if (p.elevationDeg > 0.0) {
+      scene.lights[sunIndex].position = glm::vec4(sunDirection(p.elevationDeg, p.azimuthDeg), 0.0f);
+      s.lesson = make();
+      bool seen = false;
+      s.shadowMaskHook = [&](std::string_view name) {
+        if (name != maskName) return;
+        const Image stencil = s.framebuffer->readStencil();
+        for (std::size_t i = 0; i < mask.pixels.size(); ++i)
+          mask.pixels[i] = stencil.pixels[i] == 0 ? 255 : 0;
+        seen = true;
+      };
+      const auto start = std::chrono::steady_clock::now();
+      s.renderFrame(cl.time, FrameRequest{});
+      glFinish();
+      ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      s.shadowMaskHook = nullptr;
+      if (!seen) throw std::runtime_error(s.info.id + " drew no shadow mask for the sun (" + maskName + ")");
+    }
+    std::size_t shadowed = 0;
+    for (std::size_t i = 0; i < counts.size(); ++i)
+      if (mask.pixels[i] == 0) {
+        ++counts[i];
+        ++shadowed;
+      }
+    if (cl.maskOut) writePng(*cl.maskOut / ("step-" + std::string(clock) + ".png"), mask);
+    totalMs += ms;
+    if (!cl.quiet) {
+      char line[200];
+      std::snprintf(line, sizeof line,
+                    "shadow-hours %02d:%02d: sun elevation %.2f, azimuth %.2f degrees; %zu of %zu pixels in "
+                    "shadow; frame %.1f ms%s\n",
+                    time.hour, time.minute, p.elevationDeg, p.azimuthDeg, shadowed, counts.size(), ms,
+                    p.elevationDeg > 0.0 ? "" : " (the sun is down: all shadow)");
+      std::cerr << line;
+    }
+  }
+  writePng(*cl.shadowHours, shadowHoursPicture(counts, width, height, steps, cl.shadowStep));
+  Image raw(width, height, 1);
+  for (std::size_t i = 0; i < counts.size(); ++i) raw.pixels[i] = static_cast<std::uint8_t>(counts[i]);
+  writePng(rawPathBeside(*cl.shadowHours), raw);
+  if (!cl.quiet)
+    std::cerr << "shadow-hours: " << steps << " steps of " << cl.shadowStep << " min, " << totalMs / steps
+              << " ms a frame on average; " << cl.shadowHours->string() << " and its raw counts written\n";
+  return 0;
 }
 
 }  // namespace
@@ -541,6 +619,12 @@ int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, 
     if (!readsScenes && (cl.scene || cl.maskOut))
       throw UsageError(std::string(cl.scene ? "--scene" : "--mask-out") + ": " + lessonInfo.id +
                        " draws only its own scene; the scene lessons read scene files");
+    if (cl.shadowHours && (!readsScenes || !lessonInfo.shadows))
+      throw UsageError("--shadow-hours: " + lessonInfo.id + " does not draw scene files' shadows");
+    if (cl.shadowHours && !cl.scene)
+      throw UsageError("--shadow-hours needs --scene FILE with a sun light (light sun ...)");
+    if (cl.shadowHours && cl.oracle)
+      throw UsageError("--shadow-hours and --oracle: check the steps with --mask-out");
     if (!lessonInfo.shadows && (cl.oracle || cl.maskOut))
       throw UsageError(std::string(cl.oracle ? "--oracle" : "--mask-out") + ": " + lessonInfo.id +
                        " makes no shadow claim to check or save");
@@ -556,9 +640,13 @@ int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, 
     LessonInfo info = lessonInfo;
     std::optional<Scene> scene;
     if (cl.scene) scene = readScene(cl, info);
+    if (cl.shadowHours && std::none_of(scene->lights.begin(), scene->lights.end(),
+                                       [](const SceneLight& l) { return l.sun.has_value(); }))
+      throw UsageError("--shadow-hours: " + cl.scene->string() +
+                       " has no sun light (light sun LAT LON DATE TIME ZONE)");
     const LessonFactory make = [&] { return factory(scene ? &*scene : nullptr); };
     setShaderDirFlag(cl.shaderDir);
-    BackendChoice choice = chooseBackend(cl.backend, cl.headless);
+    BackendChoice choice = chooseBackend(cl.backend, cl.headless || cl.shadowHours.has_value());
     std::unique_ptr<Session> session;
     while (!session) {
       try {
@@ -577,6 +665,7 @@ int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, 
       std::cerr << "backend: " << backendName(choice.backend) << " (" << choice.reason << "); " << f.renderer
                 << ", GL " << f.major << "." << f.minor << "; " << f.summary() << "\n";
     }
+    if (cl.shadowHours) return runShadowHours(*session, *scene, make);
     if (choice.backend != Backend::Window) return runHeadless(*session);
     const int code = runWindow(*session);
     const std::optional<std::filesystem::path> next = session->nextLesson;

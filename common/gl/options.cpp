@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "geometry/solar.h"
 #include "gl/errors.h"
 
 namespace stencil {
@@ -69,6 +70,7 @@ std::vector<Option> optionsFor(const LessonInfo& info, const std::string& varian
 
 CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
   CommandLine cl;
+  bool spanGiven = false, stepGiven = false;
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
     auto value = [&]() -> std::string {
@@ -135,7 +137,30 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
       cl.scene = value();
     else if (flag == "--mask-out")
       cl.maskOut = value();
-    else if (flag == "--update-golden")
+    else if (flag == "--shadow-hours")
+      cl.shadowHours = value();
+    else if (flag == "--shadow-span") {
+      const std::string span = value();
+      const auto clock = [&](std::string_view hhmm) {
+        const auto t = parseCivilTime("2000-01-01", hhmm);
+        if (!t || !civilTimeProblem(*t).empty())
+          throw UsageError("--shadow-span expects HH:MM-HH:MM within a day, got '" + span + "'");
+        return t->hour * 60 + t->minute;
+      };
+      if (span.size() != 11 || span[5] != '-')
+        throw UsageError("--shadow-span expects HH:MM-HH:MM within a day, got '" + span + "'");
+      cl.shadowFrom = clock(std::string_view(span).substr(0, 5));
+      cl.shadowTo = clock(std::string_view(span).substr(6, 5));
+      if (cl.shadowTo < cl.shadowFrom)
+        throw UsageError("--shadow-span ends before it starts: '" + span + "'");
+      spanGiven = true;
+    } else if (flag == "--shadow-step") {
+      const std::string step = value();
+      cl.shadowStep = parseNumber<int>(flag, step);
+      if (cl.shadowStep < 1 || cl.shadowStep > 24 * 60)
+        throw UsageError("--shadow-step must be 1 to 1440 minutes, got '" + step + "'");
+      stepGiven = true;
+    } else if (flag == "--update-golden")
       cl.updateGolden = true;
     else if (flag == "--artifacts")
       cl.artifacts = value();
@@ -149,6 +174,17 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
     else
       throw UsageError("unknown flag '" + flag + "'; --help shows the flags");
   }
+  if ((spanGiven || stepGiven) && !cl.shadowHours)
+    throw UsageError(std::string(spanGiven ? "--shadow-span" : "--shadow-step") +
+                     " needs --shadow-hours FILE.png");
+  if (cl.shadowHours && (cl.shadowTo - cl.shadowFrom) / cl.shadowStep + 1 > 255)
+    throw UsageError("--shadow-span and --shadow-step make " +
+                     std::to_string((cl.shadowTo - cl.shadowFrom) / cl.shadowStep + 1) +
+                     " steps; at most 255 (the raw counts are one byte per pixel)");
+  if (cl.shadowHours && cl.backend == Backend::Window)
+    throw UsageError("--shadow-hours renders headless; it contradicts --backend window");
+  if (cl.shadowHours && cl.frames)
+    throw UsageError("--shadow-hours renders one frame per step; drop --frames");
   if (cl.frames && std::abs(cl.time + (*cl.frames - 1) / 60.0) > kMaxTime)
     throw UsageError("--frames " + std::to_string(*cl.frames) + " from --time run past 1e6 seconds");
   if (cl.updateGolden && !cl.golden) throw UsageError("--update-golden needs --golden DIR");
@@ -217,7 +253,14 @@ std::string helpText(const LessonInfo& info, const std::string& program, bool re
     out << "  --mask-out DIR           each light's shadow mask as DIR/light-<i>.png (i from 0): the\n"
         << "                           stencil once that light's shadow is in it, white where it is 0\n"
         << "                           (lit), black elsewhere (of the last frame: headless, or a\n"
-        << "                           window with --frames)\n";
+        << "                           window with --frames); with --shadow-hours, the sun's mask at\n"
+        << "                           each step as DIR/step-HHMM.png\n"
+        << "  --shadow-hours FILE.png  a shadow profile (headless): the scene's sun light moved through\n"
+        << "                           the day, one frame per step, and for each pixel the steps it\n"
+        << "                           spent in shadow, coloured with a legend in hours; the raw counts\n"
+        << "                           beside it as FILE.raw.png; one line per step on stderr\n"
+        << "  --shadow-span HH:MM-HH:MM  the local times of the first and last step (default 09:00-17:00)\n"
+        << "  --shadow-step MINUTES    minutes between steps, 1 to 1440 (default 60)\n";
   if (info.shadows)
     out << "\n"
         << "  --oracle FILE.png        check the shadows against a CPU ray cast of the same scene,\n"

@@ -28,8 +28,12 @@ struct CommandLine {
   std::optional<std::filesystem::path> oracle;   // --oracle FILE.png: check the shadows by ray casting
   std::optional<std::filesystem::path> scene;    // --scene FILE: a scene lesson renders this scene
   std::optional<std::filesystem::path> maskOut;  // --mask-out DIR: the shadow masks (Frame::shadowMask)
-  int stencilBits = 8;                           // --stencil-bits 0 builds a framebuffer without stencil
-  bool stencilBitPlanes = false;                 // --stencil-view bits
+  // --shadow-hours FILE.png: the scene's sun light moved through --shadow-span (minutes after local
+  // midnight, both ends) in steps of --shadow-step minutes, the steps each pixel spends in shadow.
+  std::optional<std::filesystem::path> shadowHours;
+  int shadowFrom = 9 * 60, shadowTo = 17 * 60, shadowStep = 60;
+  int stencilBits = 8;            // --stencil-bits 0 builds a framebuffer without stencil
+  bool stencilBitPlanes = false;  // --stencil-view bits
   bool stats = false;
   bool updateGolden = false;
   bool quiet = false;

@@ -39,6 +39,7 @@ class Session {
   std::optional<ShadowCheck> shadowCheck;  // the last frame's, when --oracle asks for it
   glm::mat4 viewProjection{1.0f};          // the last frame's
   bool saveShadowMasks = false;            // Frame::shadowMask writes under --mask-out (the last frame)
+  Frame::ShadowMaskWriter shadowMaskHook;  // when set, Frame::shadowMask calls it instead (--shadow-hours)
   bool reversedDepth = false;              // the variant's reversed float depth, where the driver allows it
   std::optional<glm::vec2> pointer;        // Frame::pointer for the next frame (the window sets it)
   // The lesson program the window asked to go to (the course's next or previous lesson): once this

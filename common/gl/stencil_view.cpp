@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numbers>
 #include <string>
@@ -28,13 +29,17 @@ void fillRect(Image& img, int x0, int y0, int w, int h, Rgb c) {
 
 constexpr std::uint16_t kPlus = 0b000'010'111'010'000;
 constexpr std::uint16_t kOpen = 0b001'010'010'010'001, kClose = 0b100'010'010'010'100;
+constexpr std::uint16_t kPoint = 0b000'000'000'000'010;
+constexpr std::uint16_t kHour = 0b100'100'111'101'101;  // 'h'
 
-// Draws digits, '+' and parentheses with the font scaled by `scale`; returns the width drawn.
+// Draws digits, '+', '.', 'h' and parentheses with the font scaled by `scale`; returns the width drawn.
 int drawText(Image& img, int x, int y, const std::string& text, int scale, Rgb c) {
   for (size_t i = 0; i < text.size(); ++i) {
     const std::uint16_t glyph = text[i] == '+'   ? kPlus
                                 : text[i] == '(' ? kOpen
                                 : text[i] == ')' ? kClose
+                                : text[i] == '.' ? kPoint
+                                : text[i] == 'h' ? kHour
                                                  : kDigits[static_cast<size_t>(text[i] - '0')];
     for (int row = 0; row < 5; ++row)
       for (int col = 0; col < 3; ++col)
@@ -255,7 +260,8 @@ float luminance(const Rgb& c) {
   return 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2];
 }
 
-Image countLegend(const std::vector<std::uint64_t>& histogram, int top, bool saturated, int width) {
+Image countLegend(const std::vector<std::uint64_t>& histogram, int top, bool saturated, int width,
+                  const std::function<std::string(int)>& label) {
   top = std::max(top, 1);
   const int scale = width >= 480 ? 2 : 1, margin = 3 * scale, barHeight = 16 * scale, strip = 4 * scale,
             text = 5 * scale;
@@ -290,22 +296,22 @@ Image countLegend(const std::vector<std::uint64_t>& histogram, int top, bool sat
   // Labels: top always, and the multiples of a round step (1, 2, 5, 10, 20, 50, 100) far enough
   // apart to read, dropping those that would touch top's.
   const auto labelLeft = [&](int k) {
-    const std::string label = std::to_string(k);
+    const std::string labelText = label(k);
     const int centre = (columnX(k) + std::max(columnX(k + 1), columnX(k) + 1)) / 2;
-    return std::clamp(centre - textWidth(label, scale) / 2, 0, out.width - textWidth(label, scale));
+    return std::clamp(centre - textWidth(labelText, scale) / 2, 0, out.width - textWidth(labelText, scale));
   };
-  const int widest = textWidth(std::to_string(top), scale) + 3 * scale;
+  const int widest = textWidth(label(top), scale) + 3 * scale;
   int step = 1;
   for (const int s : {1, 2, 5, 10, 20, 50, 100, 200}) {
     step = s;
     if (columnX(s) - columnX(0) >= widest) break;
   }
   const int topLeft = labelLeft(top);
-  drawText(out, topLeft, labelTop, std::to_string(top), scale, {255, 255, 255});
+  drawText(out, topLeft, labelTop, label(top), scale, {255, 255, 255});
   for (int k = 0; k < top; k += step) {
     const int left = labelLeft(k);
-    if (left + textWidth(std::to_string(k), scale) + 2 * scale > topLeft) break;
-    drawText(out, left, labelTop, std::to_string(k), scale, {255, 255, 255});
+    if (left + textWidth(label(k), scale) + 2 * scale > topLeft) break;
+    drawText(out, left, labelTop, label(k), scale, {255, 255, 255});
   }
   if (saturated) {
     const int left = out.width - margin - satWidth;
@@ -313,6 +319,10 @@ Image countLegend(const std::vector<std::uint64_t>& histogram, int top, bool sat
     drawText(out, left + scale, labelTop, "255+", scale, saturatedCountColour());
   }
   return out;
+}
+
+Image countLegend(const std::vector<std::uint64_t>& histogram, int top, bool saturated, int width) {
+  return countLegend(histogram, top, saturated, width, [](int k) { return std::to_string(k); });
 }
 
 Image countPicture(const Image& stencil, bool saturates) {
@@ -350,6 +360,31 @@ Image stencilBitPlanes(const Image& stencil) {
     fillRect(out, ox + scale, oy + scale, 5 * scale, 7 * scale, {200, 40, 40});
     drawNumber(out, ox + 2 * scale, oy + 2 * scale, bit, scale, {255, 255, 255});
   }
+  return out;
+}
+
+Image shadowHoursPicture(const std::vector<std::uint16_t>& counts, int width, int height, int steps,
+                         int stepMinutes) {
+  const int top = std::max(1, steps);
+  std::vector<std::uint64_t> histogram(static_cast<std::size_t>(top) + 1, 0);
+  Image map(width, height, 4);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const int k = std::min<int>(counts[static_cast<std::size_t>(y) * width + x], top);
+      ++histogram[static_cast<std::size_t>(k)];
+      const Rgb c = countColour(k, top);
+      std::uint8_t* p = map.at(x, y);
+      p[0] = c[0], p[1] = c[1], p[2] = c[2], p[3] = 255;
+    }
+  // Hours with one decimal where a step is not a whole number of hours.
+  const auto hours = [stepMinutes](int k) {
+    const int tenths = static_cast<int>(std::lround(k * stepMinutes / 6.0));
+    return std::to_string(tenths / 10) + (tenths % 10 ? "." + std::to_string(tenths % 10) : "") + "h";
+  };
+  const Image legend = countLegend(histogram, top, false, width, hours);
+  Image out(width, height + legend.height, 4);
+  std::copy(map.pixels.begin(), map.pixels.end(), out.pixels.begin());
+  std::copy(legend.pixels.begin(), legend.pixels.end(), out.pixels.begin() + map.pixels.size());
   return out;
 }
 

@@ -2,6 +2,8 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "gl/image.h"
@@ -55,9 +57,18 @@ float luminance(const std::array<std::uint8_t, 3>&);
 // 0 and top always), and, when `saturated` is set, a cyan column apart labelled "255+" with its own
 // bar (histogram[255]). top is the largest count in the ramp; histogram has 256 entries or fewer.
 Image countLegend(const std::vector<std::uint64_t>& histogram, int top, bool saturated, int width);
+// The same with each column's label given: label(k) for count k (digits, '+', '.' and 'h').
+Image countLegend(const std::vector<std::uint64_t>& histogram, int top, bool saturated, int width,
+                  const std::function<std::string(int)>& label);
 
 // A stencil of counts as a picture: each value in countColour (255 in cyan when `saturates`), the
 // ramp's top the largest value present (other than a saturated 255), and countLegend below.
 Image countPicture(const Image& stencil, bool saturates);
+
+// A shadow-hours map (--shadow-hours): counts[i] is how many of `steps` sun positions, stepMinutes
+// apart, left pixel i (top row first, width x height) in shadow. Each pixel in
+// countColour(count, steps), and below, countLegend labelled in hours (count x stepMinutes / 60).
+Image shadowHoursPicture(const std::vector<std::uint16_t>& counts, int width, int height, int steps,
+                         int stepMinutes);
 
 }  // namespace stencil

@@ -1,19 +1,26 @@
 // Silhouette extraction against a plain memory scan of the same data (Google Benchmark).
 //
-// silhouette: facesLight (every triangle's three indices and positions: does it face the
-// light?) then silhouetteEdges (every edge of the prepared caster's adjacency: do its two faces
-// disagree?), on welded spheres and tori of about 1k to 1M triangles. scan: the same arrays
-// (indices, positions, edges) summed, nothing else: how fast the machine can merely read what
-// the extraction reads. The ratio says how far from memory-bound the extraction is. The two
-// halves are timed apart too (faces: facesLight alone; edges: silhouetteEdges on its result).
+// mesh: facesLight (every triangle's three indices and positions: does it face the light?) then
+// silhouetteEdges (every edge of the prepared caster's adjacency: do its two faces disagree?), on
+// welded spheres and tori of about 1k to 1M triangles. prepared: the same edges from a
+// SilhouetteCaster (face normals and first corners precomputed once, streamed by the facing pass;
+// each edge's two faces read once against one-byte flags). scan: the arrays the mesh version
+// reads (indices, positions, edges) summed as 32-bit words, nothing else; scan-prepared: the same
+// for the arrays the prepared version streams (the six per-face floats and the edges' faces).
+// The ratios say how far from memory-bound each extraction is. The halves are timed apart too
+// (faces/edges: the mesh version's two calls; facing/edgepass: the prepared version's), and
+// prepare: building the SilhouetteCaster, once per caster.
 //
-//   silhouette_benchmark [--quick] [--table FILE.md] [benchmark flags]
+//   silhouette_benchmark [--quick] [--table FILE.md] [--raw FILE.csv] [benchmark flags]
 //
-// --quick: the three smallest sizes only, and a check that every silhouette is a set of closed
-// loops (each vertex leaves it as often as it enters it); exit 1 if not. --table writes the
-// results as a Markdown table (triangles, ns per triangle, GB/s, ratio to the scan).
+// --quick: the three smallest sizes only, and two checks: every silhouette is a set of closed
+// loops (each vertex leaves it as often as it enters it), and the prepared version gives the
+// mesh version's edges; exit 1 if not. --table writes the results as a Markdown table
+// (triangles, ns per triangle, GB/s, ratios to the scans); --raw the CPU time of every repetition
+// of every benchmark as CSV.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
@@ -23,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/dual_silhouette.h"
 #include "geometry/scene.h"
 #include "geometry/shadow_volume.h"
 #include "geometry/shapes.h"
@@ -53,6 +61,42 @@ const PreparedCaster& caster(const std::string& shape, const Size& size) {
   return *slot;
 }
 
+const SilhouetteCaster& silhouetteCaster(const std::string& shape, const Size& size) {
+  static std::map<std::string, std::unique_ptr<SilhouetteCaster>> cache;
+  auto& slot = cache[shape + size.name];
+  if (!slot) {
+    const PreparedCaster& c = caster(shape, size);
+    slot = std::make_unique<SilhouetteCaster>(prepareSilhouettes(c.mesh, c.adjacency));
+  }
+  return *slot;
+}
+
+const DualSilhouettes& dualTree(const std::string& shape, const Size& size) {
+  static std::map<std::string, std::unique_ptr<DualSilhouettes>> cache;
+  auto& slot = cache[shape + size.name];
+  if (!slot) slot = std::make_unique<DualSilhouettes>(silhouetteCaster(shape, size));
+  return *slot;
+}
+
+// The sum of an array's bytes as 32-bit words, four running sums so that the loop is bound by
+// loads, not by one addition's latency.
+template <typename T>
+std::uint32_t sumWords(const std::vector<T>& v) {
+  static_assert(sizeof(T) % 4 == 0);
+  const std::size_t words = v.size() * sizeof(T) / 4;
+  const auto* p = reinterpret_cast<const std::uint32_t*>(v.data());
+  std::uint32_t s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+  std::size_t i = 0;
+  for (; i + 4 <= words; i += 4) {
+    s0 += p[i];
+    s1 += p[i + 1];
+    s2 += p[i + 2];
+    s3 += p[i + 3];
+  }
+  for (; i < words; ++i) s0 += p[i];
+  return s0 + s1 + s2 + s3;
+}
+
 // What both benchmarks read, in bytes: indices and positions (facesLight), edges (silhouetteEdges).
 std::int64_t bytesRead(const PreparedCaster& c) {
   return static_cast<std::int64_t>(c.mesh.indices.size() * sizeof(std::uint32_t) +
@@ -60,9 +104,15 @@ std::int64_t bytesRead(const PreparedCaster& c) {
                                    c.adjacency.edges.size() * sizeof(Edge));
 }
 
+// What the prepared version streams, in bytes: six floats per face, two faces per edge.
+std::int64_t preparedBytesRead(const SilhouetteCaster& c) {
+  return static_cast<std::int64_t>(6 * c.faceCount() * sizeof(float) +
+                                   c.edgeFaces.size() * sizeof(SilhouetteCaster::EdgeFaces));
+}
+
 const glm::vec4 light(3.0f, 4.0f, 5.0f, 1.0f);
 
-void silhouette(benchmark::State& state, const std::string& shape, const Size& size) {
+void meshVersion(benchmark::State& state, const std::string& shape, const Size& size) {
   const PreparedCaster& c = caster(shape, size);
   std::size_t edges = 0;
   for (auto _ : state) {
@@ -75,6 +125,86 @@ void silhouette(benchmark::State& state, const std::string& shape, const Size& s
   state.SetBytesProcessed(state.iterations() * bytesRead(c));
   state.counters["triangles"] = static_cast<double>(c.mesh.triangleCount());
   state.counters["silhouette_edges"] = static_cast<double>(edges);
+}
+
+void prepared(benchmark::State& state, const std::string& shape, const Size& size) {
+  const SilhouetteCaster& c = silhouetteCaster(shape, size);
+  std::vector<std::uint8_t> lit;
+  std::vector<SilhouetteEdge> silhouette;
+  for (auto _ : state) {
+    facesLight(c, light, lit);
+    silhouetteEdges(c, lit, silhouette);
+    benchmark::DoNotOptimize(silhouette.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(c.faceCount()));
+  state.SetBytesProcessed(state.iterations() * preparedBytesRead(c));
+  state.counters["triangles"] = static_cast<double>(c.faceCount());
+  state.counters["silhouette_edges"] = static_cast<double>(silhouette.size());
+}
+
+void facing(benchmark::State& state, const std::string& shape, const Size& size) {
+  const SilhouetteCaster& c = silhouetteCaster(shape, size);
+  std::vector<std::uint8_t> lit;
+  for (auto _ : state) {
+    facesLight(c, light, lit);
+    benchmark::DoNotOptimize(lit.data());
+  }
+  state.counters["triangles"] = static_cast<double>(c.faceCount());
+}
+
+void edgepass(benchmark::State& state, const std::string& shape, const Size& size) {
+  const SilhouetteCaster& c = silhouetteCaster(shape, size);
+  std::vector<std::uint8_t> lit;
+  std::vector<SilhouetteEdge> silhouette;
+  facesLight(c, light, lit);
+  for (auto _ : state) {
+    silhouetteEdges(c, lit, silhouette);
+    benchmark::DoNotOptimize(silhouette.data());
+  }
+  state.counters["triangles"] = static_cast<double>(c.faceCount());
+}
+
+void prepare(benchmark::State& state, const std::string& shape, const Size& size) {
+  const PreparedCaster& c = caster(shape, size);
+  for (auto _ : state) {
+    SilhouetteCaster s = prepareSilhouettes(c.mesh, c.adjacency);
+    benchmark::DoNotOptimize(s.nx.data());
+  }
+  state.counters["triangles"] = static_cast<double>(c.mesh.triangleCount());
+}
+
+// Wallner's dual space: the hextree's query for the same light (the tree built once, outside).
+void dual(benchmark::State& state, const std::string& shape, const Size& size) {
+  const DualSilhouettes& tree = dualTree(shape, size);
+  std::vector<SilhouetteEdge> silhouette;
+  for (auto _ : state) {
+    tree.query(light, silhouette);
+    benchmark::DoNotOptimize(silhouette.data());
+  }
+  state.counters["triangles"] = static_cast<double>(silhouetteCaster(shape, size).faceCount());
+  state.counters["silhouette_edges"] = static_cast<double>(silhouette.size());
+  state.counters["cells_visited"] = static_cast<double>(tree.lastQuery().cellsVisited);
+  state.counters["edges_tested"] = static_cast<double>(tree.lastQuery().edgesTested);
+}
+
+void dualPrepare(benchmark::State& state, const std::string& shape, const Size& size) {
+  const SilhouetteCaster& c = silhouetteCaster(shape, size);
+  for (auto _ : state) {
+    DualSilhouettes tree(c);
+    benchmark::DoNotOptimize(&tree);
+  }
+  state.counters["triangles"] = static_cast<double>(c.faceCount());
+}
+
+void scanPrepared(benchmark::State& state, const std::string& shape, const Size& size) {
+  const SilhouetteCaster& c = silhouetteCaster(shape, size);
+  for (auto _ : state) {
+    std::uint32_t sum = sumWords(c.nx) + sumWords(c.ny) + sumWords(c.nz) + sumWords(c.ax) + sumWords(c.ay) +
+                        sumWords(c.az) + sumWords(c.edgeFaces);
+    benchmark::DoNotOptimize(sum);
+  }
+  state.SetBytesProcessed(state.iterations() * preparedBytesRead(c));
+  state.counters["triangles"] = static_cast<double>(c.faceCount());
 }
 
 void faces(benchmark::State& state, const std::string& shape, const Size& size) {
@@ -101,15 +231,8 @@ void edges(benchmark::State& state, const std::string& shape, const Size& size) 
 void scan(benchmark::State& state, const std::string& shape, const Size& size) {
   const PreparedCaster& c = caster(shape, size);
   for (auto _ : state) {
-    std::uint32_t indexSum = 0, edgeSum = 0;
-    float positionSum = 0.0f;
-    for (std::uint32_t i : c.mesh.indices) indexSum += i;
-    for (const glm::vec3& p : c.mesh.positions) positionSum += p.x + p.y + p.z;
-    for (const Edge& e : c.adjacency.edges)
-      edgeSum += e.v0 + e.v1 + static_cast<std::uint32_t>(e.face0) + static_cast<std::uint32_t>(e.face1);
-    benchmark::DoNotOptimize(indexSum);
-    benchmark::DoNotOptimize(positionSum);
-    benchmark::DoNotOptimize(edgeSum);
+    std::uint32_t sum = sumWords(c.mesh.indices) + sumWords(c.mesh.positions) + sumWords(c.adjacency.edges);
+    benchmark::DoNotOptimize(sum);
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(c.mesh.triangleCount()));
   state.SetBytesProcessed(state.iterations() * bytesRead(c));
@@ -130,6 +253,17 @@ bool closedLoops(const PreparedCaster& c) {
   return !edges.empty();
 }
 
+// The prepared version gives the mesh version's edges, in the same order and direction.
+bool sameAsMeshVersion(const std::string& shape, const Size& size) {
+  const PreparedCaster& c = caster(shape, size);
+  const std::vector<SilhouetteEdge> a = silhouetteEdges(c.adjacency, facesLight(c.mesh, light)),
+                                    b = silhouetteEdges(silhouetteCaster(shape, size), light);
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (a[i].v0 != b[i].v0 || a[i].v1 != b[i].v1) return false;
+  return true;
+}
+
 // Google Benchmark 1.8 replaced Run::error_occurred with Run::skipped; both are in use (Debian 12
 // has 1.7, Debian 13 has 1.9).
 template <typename R>
@@ -140,19 +274,28 @@ bool failed(const R& run) {
     return run.error_occurred;
 }
 
-// Keeps each run's time per iteration for the table.
+// Keeps each run's time per iteration for the table: the median of its repetitions, which with
+// --benchmark_enable_random_interleaving ran interleaved with the other benchmarks', so that a
+// busy moment on a shared machine falls on all of them alike.
 class TableReporter : public benchmark::ConsoleReporter {
  public:
   struct Row {
-    double triangles = 0, bytes = 0, ns = 0, edges = 0;
+    double triangles = 0, edges = 0;
+    std::vector<double> ns;  // one per repetition
+    double median() const {
+      std::vector<double> sorted = ns;
+      std::sort(sorted.begin(), sorted.end());
+      const std::size_t n = sorted.size();
+      return n == 0 ? 0.0 : n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+    }
   };
-  std::map<std::string, Row> rows;  // by name: "silhouette/sphere/1k"
+  std::map<std::string, Row> rows;  // by name: "prepared/sphere/1k"
 
   void ReportRuns(const std::vector<Run>& runs) override {
     for (const Run& run : runs) {
       if (failed(run) || run.run_type != Run::RT_Iteration) continue;
-      Row& row = rows[run.benchmark_name()];
-      row.ns = run.GetAdjustedCPUTime();  // nanoseconds; CPU time, as the machine may be shared
+      Row& row = rows[run.run_name.function_name];
+      row.ns.push_back(run.GetAdjustedCPUTime());  // nanoseconds; CPU time, as the machine may be shared
       row.triangles = run.counters.at("triangles").value;
       if (run.counters.count("silhouette_edges")) row.edges = run.counters.at("silhouette_edges").value;
     }
@@ -160,42 +303,72 @@ class TableReporter : public benchmark::ConsoleReporter {
   }
 };
 
+double perTriangle(const TableReporter& reporter, const std::string& name) {
+  const auto row = reporter.rows.find(name);
+  return row == reporter.rows.end() ? 0.0 : row->second.median() / row->second.triangles;
+}
+
 void writeTable(const TableReporter& reporter, const std::string& file) {
   std::ofstream out(file);
   out << "# Silhouette extraction against a memory scan\n\n"
-      << "`facesLight` + `silhouetteEdges` (common/geometry/shadow_volume.h) on welded spheres and tori,\n"
-      << "a point light at (3, 4, 5), against summing the same arrays (indices, positions, edges).\n"
-      << "CPU time per call; GB/s counts the bytes of those arrays once per call. The two halves,\n"
-      << "timed apart: facesLight (indices and positions) and silhouetteEdges (edges and the flags).\n"
-      << "Written by `cmake --build build --target silhouette-benchmark` (raw figures in\n"
-      << "silhouette-extraction.json).\n\n"
-      << "| shape | triangles | silhouette edges | silhouette ns/triangle | of which facesLight | of which "
-         "silhouetteEdges | silhouette GB/s | scan ns/triangle | scan GB/s | silhouette time / scan time |\n"
-      << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+      << "The possible silhouette edges of welded spheres and tori for a point light at (3, 4, 5), two\n"
+      << "ways (common/geometry/shadow_volume.h): **mesh**, `facesLight` + `silhouetteEdges` on the mesh "
+         "and\n"
+      << "its adjacency (a gathered cross product per triangle, bit flags); **prepared**, the same two\n"
+      << "passes on a `SilhouetteCaster` (face normals and first corners precomputed once and streamed,\n"
+      << "each edge's two faces read once against one-byte flags; identical edges). Each against a scan\n"
+      << "that sums the arrays it reads as 32-bit words: **scan** the indices, positions and edges (mesh),\n"
+      << "**scan-prepared** the six per-face floats and the edges' face pairs (prepared). Single thread,\n"
+      << "CPU time per call, the median of 3 repetitions interleaved at random, all in one benchmark run;\n"
+      << "GB/s counts those arrays' bytes once per call.\n"
+      << "The halves: facesLight / the facing pass, silhouetteEdges / the edge pass. prepare: building\n"
+      << "the SilhouetteCaster, once per caster. Written by `cmake --build build --target\n"
+      << "silhouette-benchmark` (every repetition's time in silhouette-extraction.csv).\n\n"
+      << "| shape | triangles | silhouette edges | mesh ns/tri | (facesLight + silhouetteEdges) | scan "
+         "ns/tri | "
+         "mesh / scan | prepared ns/tri | (facing + edge pass) | prepared GB/s | scan-prepared ns/tri | "
+         "scan-prepared GB/s | **prepared / scan-prepared** | prepared / scan | prepare ns/tri (once) |\n"
+      << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const char* shape : {"sphere", "torus"})
     for (const Size& size : sizes) {
       const std::string key = std::string("/") + shape + "/" + size.name;
-      const auto s = reporter.rows.find("silhouette" + key), m = reporter.rows.find("scan" + key),
-                 f = reporter.rows.find("faces" + key), e = reporter.rows.find("edges" + key);
-      if (s == reporter.rows.end() || m == reporter.rows.end() || f == reporter.rows.end() ||
-          e == reporter.rows.end())
+      const auto p = reporter.rows.find("prepared" + key);
+      if (p == reporter.rows.end() || reporter.rows.find("scan-prepared" + key) == reporter.rows.end() ||
+          reporter.rows.find("mesh" + key) == reporter.rows.end())
         continue;
-      const double bytes = static_cast<double>(bytesRead(caster(shape, size)));
-      char line[256];
+      const double mesh = perTriangle(reporter, "mesh" + key), scan = perTriangle(reporter, "scan" + key),
+                   prep = perTriangle(reporter, "prepared" + key),
+                   scanPrep = perTriangle(reporter, "scan-prepared" + key);
+      const double bytes = static_cast<double>(preparedBytesRead(silhouetteCaster(shape, size)));
+      char line[512];
       std::snprintf(
-          line, sizeof line, "| %s | %.0f | %.0f | %.2f | %.2f | %.2f | %.2f | %.3f | %.2f | %.1f |\n", shape,
-          s->second.triangles, s->second.edges, s->second.ns / s->second.triangles,
-          f->second.ns / f->second.triangles, e->second.ns / e->second.triangles, bytes / s->second.ns,
-          m->second.ns / m->second.triangles, bytes / m->second.ns, s->second.ns / m->second.ns);
+          line, sizeof line,
+          "| %s | %.0f | %.0f | %.2f | %.2f + %.2f | %.2f | %.1f | %.2f | %.2f + %.2f | %.1f | %.2f | %.1f | "
+          "**%.2f** | %.2f | %.1f |\n",
+          shape, p->second.triangles, p->second.edges, mesh, perTriangle(reporter, "faces" + key),
+          perTriangle(reporter, "edges" + key), scan, mesh / scan, prep,
+          perTriangle(reporter, "facing" + key), perTriangle(reporter, "edgepass" + key),
+          bytes / (prep * p->second.triangles), scanPrep, bytes / (scanPrep * p->second.triangles),
+          prep / scanPrep, prep / scan, perTriangle(reporter, "prepare" + key));
       out << line;
     }
+}
+
+void writeRaw(const TableReporter& reporter, const std::string& file) {
+  std::ofstream out(file);
+  out << "benchmark,triangles,silhouette_edges,median_cpu_ns,repetition_cpu_ns\n";
+  for (const auto& [name, row] : reporter.rows) {
+    out << name << "," << row.triangles << "," << row.edges << "," << row.median() << ",";
+    for (std::size_t i = 0; i < row.ns.size(); ++i) out << (i ? " " : "") << row.ns[i];
+    out << "\n";
+  }
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   bool quick = false;
-  std::string table;
+  std::string table, raw;
   std::vector<char*> rest{argv[0]};
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -203,6 +376,8 @@ int main(int argc, char** argv) {
       quick = true;
     else if (arg == "--table" && i + 1 < argc)
       table = argv[++i];
+    else if (arg == "--raw" && i + 1 < argc)
+      raw = argv[++i];
     else
       rest.push_back(argv[i]);
   }
@@ -215,18 +390,34 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0; i < count; ++i) {
       const Size& size = sizes[i];
       const std::string key = std::string("/") + shape + "/" + size.name;
-      benchmark::RegisterBenchmark(("silhouette" + key).c_str(), silhouette, std::string(shape), size);
-      benchmark::RegisterBenchmark(("scan" + key).c_str(), scan, std::string(shape), size);
-      benchmark::RegisterBenchmark(("faces" + key).c_str(), faces, std::string(shape), size);
-      benchmark::RegisterBenchmark(("edges" + key).c_str(), edges, std::string(shape), size);
+      const std::pair<const char*, void (*)(benchmark::State&, const std::string&, const Size&)> runs[] = {
+          {"mesh", meshVersion},
+          {"prepared", prepared},
+          {"scan", scan},
+          {"scan-prepared", scanPrepared},
+          {"faces", faces},
+          {"edges", edges},
+          {"facing", facing},
+          {"edgepass", edgepass},
+          {"prepare", prepare},
+          {"dual", dual},
+          {"dual-prepare", dualPrepare}};
+      for (const auto& [name, run] : runs)
+        benchmark::RegisterBenchmark((name + key).c_str(), run, std::string(shape), size);
       if (quick && !closedLoops(caster(shape, size))) {
         std::cerr << shape << " " << size.name << ": the silhouette is not a set of closed loops\n";
+        return 1;
+      }
+      if (quick && !sameAsMeshVersion(shape, size)) {
+        std::cerr << shape << " " << size.name
+                  << ": the prepared silhouette differs from the mesh version's\n";
         return 1;
       }
     }
   TableReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
   if (!table.empty()) writeTable(reporter, table);
+  if (!raw.empty()) writeRaw(reporter, raw);
   benchmark::Shutdown();
   return 0;
 }

@@ -128,6 +128,30 @@ TEST(SceneFile, AGoodFile) {
 }
 
 // The example at the top of docs/scenes.md reads (its OBJ model replaced by one that exists).
+// A sun light: directional, towards where the sun stands at that place and local time.
+TEST(SceneFile, ASunLightStandsWhereTheSunDoes) {
+  const Scene scene = parseScene(
+      std::string(header) + "light sun 48.2 16.37 2025-09-18 12:00 +2 color 1 1 0.9\n" + "object a box\n",
+      "test.scene");
+  ASSERT_EQ(scene.lights.size(), 2u);
+  const SceneLight& sun = scene.lights[1];
+  ASSERT_TRUE(sun.sun);
+  EXPECT_EQ(sun.position.w, 0.0f);
+  EXPECT_DOUBLE_EQ(sun.sun->place.latitudeDeg, double(48.2f));
+  EXPECT_EQ(sun.sun->time.hour, 12);
+  EXPECT_EQ(sun.sun->time.zoneHours, 2.0);
+  const SunPosition p = sunPosition(sun.sun->place, sun.sun->time);
+  const glm::vec3 expected = sunDirection(p.elevationDeg, p.azimuthDeg);
+  EXPECT_EQ(glm::vec3(sun.position), expected);
+  // Near noon (12:00 CEST is 10:00 UT, the sun at 16.37 E culminates about 10:50 UT): south-east, and
+  // 90 - 48.2 + its declination (+1.8 degrees on 18 September) high at most.
+  EXPECT_GT(sun.position.x, 0.0f);
+  EXPECT_GT(sun.position.z, 0.0f);
+  EXPECT_GT(p.elevationDeg, 35.0);
+  EXPECT_LT(p.elevationDeg, 90.0 - 48.2 + 1.9);
+  EXPECT_FALSE(scene.lights[0].sun);
+}
+
 TEST(SceneFile, TheDocumentedExampleReads) {
   std::ifstream in(std::filesystem::path(DOCS_DIR) / "scenes.md");
   const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -200,7 +224,29 @@ TEST(SceneFile, EveryMistakeIsOneLineWithFileLineAndWhatWasExpected) {
       {"camera eye 0 2 5 target 0 0 0 near 1 near 2\n", "test.scene:1: camera setting 'near' given twice"},
       {h + "camera eye 0 2 5 target 0 0 0 near 1\n", "test.scene:3: a second camera line"},
       {h + "light spot 1 2 3\n",
-       "test.scene:3: expected the light's type (point or directional), got 'spot'"},
+       "test.scene:3: expected the light's type (point, directional or sun), got 'spot'"},
+      {h + "light sun 91 16 2025-09-18 12:00 2\n",
+       "test.scene:3: expected a latitude of -90 to 90 degrees, got 91"},
+      {h + "light sun 48.2 -181 2025-09-18 12:00 2\n",
+       "test.scene:3: expected a longitude of -180 to 180 degrees, got -181"},
+      {h + "light sun 48.2 16 2025-9-18 12:00 2\n",
+       "test.scene:3: expected a date YYYY-MM-DD and a local time HH:MM, got '2025-9-18 12:00'"},
+      {h + "light sun 48.2 16 2025-09-18 noon 2\n",
+       "test.scene:3: expected a date YYYY-MM-DD and a local time HH:MM, got '2025-09-18 noon'"},
+      {h + "light sun 48.2 16 2025-02-29 12:00 2\n",
+       "test.scene:3: expected a date and time that exist: day 29 does not exist in month 2 of 2025"},
+      {h + "light sun 48.2 16 2025-09-18 25:00 2\n",
+       "test.scene:3: expected a date and time that exist: the time must be 00:00 to 23:59:59"},
+      {h + "light sun 48.2 16 2025-09-18 12:00 15\n",
+       "test.scene:3: expected a date and time that exist: the time zone must be -14 to +14 hours"},
+      {h + "light sun 48.2 16 2025-09-18 12:00\n", "test.scene:3: expected the time zone in hours from UTC"},
+      {h + "light sun 48.2 16 2025-09-18 12:00 +-2\n",
+       "test.scene:3: expected the time zone in hours from UTC (+2 for CEST), got '+-2'"},
+      {h + "light sun 48.2 16 2025-09-18 12:00 CEST\n",
+       "test.scene:3: expected the time zone in hours from UTC (+2 for CEST), got 'CEST'"},
+      {h + "light sun 48.2 16 2025-09-18 23:00 2\n", "test.scene:3: the sun is below the horizon then"},
+      {h + "light sun 48.2 16 2025-09-18 12:00 2 radius 3\n",
+       "test.scene:3: a directional light has no radius"},
       {h + "light directional 0 0 0\n",
        "test.scene:3: expected the direction towards the light to be a direction"},
       {h + "light directional 0 1 0 radius 5\n", "test.scene:3: a directional light has no radius"},
