@@ -60,7 +60,10 @@ LessonInfo lessonInfo() {
        2},
       {"disk", 'D', "a disk light instead of the rectangle", 0},
       {"size", 'I', "the light's width in tenths of a unit (depth: two thirds of it); 0 a point", 15, 30},
-      {"float", 'F', "accumulate in an RGBA16F target (off: RGBA8, each light's term rounded to 1/255)", 1},
+      {"float", 'F',
+       "the accumulation target: 1 RGBA32F, 2 RGBA16F (an 11-bit mantissa: N additions near 1 each round),\n"
+       "      0 RGBA8 (each light's term rounded to 1/255)",
+       1, 2},
       {"scale", 'W', "each light adds 1/N of the area light (off: the whole light each)", 1},
       {"update-bit", 'U', "adding a light sets the stencil bit it tested: one addition per pixel per light",
        1},
@@ -130,7 +133,10 @@ LessonInfo lessonInfo() {
       {"many-8bit",
        "256 lights in RGBA8: the terms below one level vanish",
        {{"lights", 256}, {"float", 0}, {"pattern", 2}}},
-      {"many", "256 Halton lights in float", {{"lights", 256}, {"pattern", 2}}},
+      {"many", "256 Halton lights in RGBA32F", {{"lights", 256}, {"pattern", 2}}},
+      {"many-16f",
+       "256 Halton lights in RGBA16F: rounding near 1 adds up over the lights",
+       {{"lights", 256}, {"pattern", 2}, {"float", 2}}},
       {"disk", "a disk light, 64 Halton lights", {{"lights", 64}, {"pattern", 2}, {"disk", 1}}},
       {"visibility",
        "64 Halton lights, the visible fraction unshaded",
@@ -289,7 +295,9 @@ class SoftShadows final : public Lesson {
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framework);
     framework_ = static_cast<GLuint>(framework);
     size_ = f.size;
-    const GLenum format = f.on("float") ? GL_RGBA16F : GL_RGBA8;
+    const GLenum format = f.option("float") == 1   ? GL_RGBA32F
+                          : f.option("float") == 2 ? GL_RGBA16F
+                                                   : GL_RGBA8;
     if (!target_ || !target_->fits(f.size, format)) target_ = std::make_unique<Target>(f.size, format, true);
     if (!saved_ || !saved_->fits(f.size, GL_RGBA8)) saved_ = std::make_unique<Target>(f.size, GL_RGBA8, true);
 
