@@ -288,8 +288,10 @@ class SoftShadows final : public Lesson {
     const bool kilgard = f.option("method") == 1;
     if (f.on("reference") && (f.option("casters") != 1 || f.option("size") == 0))
       throw UsageError("--set reference=1 needs casters=1 (the slab alone) and a light of size 1 or more");
-    for (const char* name : {"lights", "rounds", "samples", "stencil_clears", "volume_triangles",
-                             "illumination_draws", "light_groups"})
+    for (const char* name :
+         {"lights", "rounds", "samples", "stencil_clears", "volume_triangles", "illumination_draws",
+          "light_groups", "penumbra_width_x_milli", "penumbra_width_x_predicted_milli",
+          "penumbra_width_z_milli", "penumbra_width_z_predicted_milli"})
       f.count(name, 0);
     GLint framework = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framework);
@@ -354,6 +356,7 @@ class SoftShadows final : public Lesson {
       glDisable(GL_BLEND);
       picture = average_.get();
     }
+    measurePenumbra(f, *picture, area);
     glBindFramebuffer(GL_FRAMEBUFFER, framework_);
     glViewport(0, 0, f.size.x, f.size.y);
     drawPicture(*picture, n, f.on("penumbra"));
@@ -595,6 +598,49 @@ class SoftShadows final : public Lesson {
     glEnable(GL_DEPTH_TEST);
   }
 
+  // ---- the penumbra's width, measured on the picture ------------------------------------------
+
+  // Where the picture is the visible fraction of a rectangular light past the slab alone: walk
+  // out of the slab's shadow across its +x edge (along the ground line z = the slab's centre) and
+  // across its +z edge (x = the slab's centre), reading the picture at each ground point's pixel,
+  // and time the ramp from 2% to 98% of the light; over 0.96 it is the whole ramp's width. Reported
+  // in thousandths of a unit beside W h / (H - h) for the slab's mid-plane h
+  // (geometry/soft_shadow.h's straightEdgePenumbraWidth).
+  void measurePenumbra(Frame& f, const Target& picture, const AreaLight& area) {
+    if (!(f.on("visibility") || f.on("reference")) || f.on("disk") || f.option("casters") != 1 ||
+        f.option("size") == 0)
+      return;
+    std::vector<float> pixels(static_cast<std::size_t>(4 * f.size.x * f.size.y));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, picture.fbo());
+    glReadPixels(0, 0, f.size.x, f.size.y, GL_RGBA, GL_FLOAT, pixels.data());
+    const glm::mat4 viewProjection = f.projection * f.view;
+    auto rampWidth = [&](glm::vec3 from, glm::vec3 step) {
+      float at02 = -1.0f, at98 = -1.0f;
+      for (int k = 0; k < 400; ++k) {
+        const glm::vec3 p = from + static_cast<float>(k) * step;
+        const glm::vec4 clip = viewProjection * glm::vec4(p, 1.0f);
+        const glm::vec2 window = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(f.size);
+        const int x = static_cast<int>(window.x), y = static_cast<int>(window.y);
+        if (x < 0 || y < 0 || x >= f.size.x || y >= f.size.y) continue;
+        const float v = pixels[static_cast<std::size_t>(4 * (y * f.size.x + x))];
+        const float s = static_cast<float>(k) * glm::length(step);
+        if (at02 < 0.0f && v >= 0.02f) at02 = s;
+        if (at98 < 0.0f && v >= 0.98f) at98 = s;
+      }
+      return at02 < 0.0f || at98 < 0.0f ? 0.0 : static_cast<double>(at98 - at02) / 0.96;
+    };
+    const double H = kLightHeight, h = kSlabHeight;
+    // From under the slab's middle outwards, 2 units in steps of 0.005.
+    const double wx = rampWidth({kSlabCentre.x, 0.0f, kSlabCentre.z}, {0.005f, 0.0f, 0.0f});
+    const double wz = rampWidth({kSlabCentre.x, 0.0f, kSlabCentre.z}, {0.0f, 0.0f, 0.005f});
+    f.count("penumbra_width_x_milli", static_cast<std::uint64_t>(std::lround(1000.0 * wx)));
+    f.count("penumbra_width_z_milli", static_cast<std::uint64_t>(std::lround(1000.0 * wz)));
+    f.count("penumbra_width_x_predicted_milli",
+            static_cast<std::uint64_t>(std::lround(1000.0 * straightEdgePenumbraWidth(area.size.x, H, h))));
+    f.count("penumbra_width_z_predicted_milli",
+            static_cast<std::uint64_t>(std::lround(1000.0 * straightEdgePenumbraWidth(area.size.y, H, h))));
+  }
+
   // ---- the exact answer --------------------------------------------------------------------------
 
   // Per pixel centre: the eye ray onto the ground (if the slab does not hide it) and the ground
@@ -607,7 +653,10 @@ class SoftShadows final : public Lesson {
     for (int i = 0; i < 8; ++i)
       corners.push_back({i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z});
     const float n = static_cast<float>(f.option("lights"));
+    // What the ambient pass left (the background, the casters) stays; ground pixels are replaced.
     std::vector<float> pixels(static_cast<std::size_t>(4 * f.size.x * f.size.y), 0.0f);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, target_->fbo());
+    glReadPixels(0, 0, f.size.x, f.size.y, GL_RGBA, GL_FLOAT, pixels.data());
     for (int y = 0; y < f.size.y; ++y)
       for (int x = 0; x < f.size.x; ++x) {
         const glm::vec2 ndc(2.0f * (static_cast<float>(x) + 0.5f) / static_cast<float>(f.size.x) - 1.0f,
