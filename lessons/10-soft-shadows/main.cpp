@@ -19,8 +19,15 @@
 //
 // The default corrects them: per light a robust z-fail count (closed volumes, lesson 15) in the
 // whole stencil, the light added where the count is 0, into a float target; any N.
+//
+// Penumbra wedges (the variant wedges; Assarsson and Akenine-Moller 2003): only the penumbra needs
+// N lights. Around every edge that is a silhouette edge from some point of the light, a convex
+// wedge (the edge and its extrusions away from the light's corners) bounds the region where the
+// lights can disagree; the wedges mark their pixels in a stencil bit, the N-light loop runs only
+// there, and outside one light's hard shadow decides, every light added at once where it is lit.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
@@ -83,6 +90,15 @@ LessonInfo lessonInfo() {
       {"light", 'L', "the light whose hard shadow the final stencil holds (the one --oracle checks)", 0,
        kMaxLights - 1},
       {"shadow", 'H', "shadows at all (off: every light reaches everything)", 1},
+      {"wedges", 'P',
+       "penumbra wedges (counting only): the N-light loop only in the wedges' pixels, one light's hard\n"
+       "      shadow deciding everywhere else",
+       0},
+      {"show-wedges", 'V', "tint the pixels the wedges mark (wedges only)", 0},
+      {"wedge-size", 'S',
+       "the light the wedges are built from, in percent of the real one (test hook: under 100 the wedges\n"
+       "      miss part of the penumbra)",
+       100, 100},
   };
   info.variants = {
       {"counting",
@@ -143,11 +159,17 @@ LessonInfo lessonInfo() {
        {{"lights", 64}, {"pattern", 2}, {"visibility", 1}}},
       {"reference", "the exact visible fraction, analytic", {{"reference", 1}, {"visibility", 1}}},
       {"penumbra", "the penumbra tinted", {{"penumbra", 1}}},
+      {"wedges",
+       "sixteen jittered lights, the N-light loop only inside the penumbra wedges",
+       {{"wedges", 1}}},
+      {"wedges-marked",
+       "the pixels the penumbra wedges mark, tinted: the only ones where N lights run",
+       {{"wedges", 1}, {"show-wedges", 1}, {"casters", 3}}},
   };
   info.shadows = true;
   // Snapshots after the first light's (or first eight's) volumes and illumination, then after all
   // the others: a pass per light would copy the frame once per light.
-  info.passes = {"ambient", "volumes", "illumination", "other-lights", "resolve"};
+  info.passes = {"ambient", "wedges", "volumes", "illumination", "other-lights", "resolve"};
   info.camera.target = {0.2f, 0.3f, 0.3f};
   info.camera.distance = 6.6f;
   info.camera.azimuthDeg = 20.0f;
@@ -198,6 +220,118 @@ Mesh matFrom(const Mesh& ground) {
     }
   }
   return mat;
+}
+
+// ---- penumbra wedges (Assarsson and Akenine-Moller, "A Geometry-Based Soft Shadow Volume
+// Algorithm Using Graphics Hardware", SIGGRAPH 2003) --------------------------------------------
+
+constexpr float kWedgeFloor = -0.5f;  // wedges end below every receiver (the ground is y = 0)
+
+// The convex hull of a few points (a dozen: every plane through three of them with all the others
+// on one side holds a face), as triangles counter-clockwise seen from outside, w = 1. Points
+// within 1e-6 of the hull's size from a face's plane belong to that face. Empty when the points
+// span no volume.
+std::vector<glm::vec4> convexHull(const std::vector<glm::dvec3>& p) {
+  std::vector<glm::vec4> triangles;
+  double size = 0.0;
+  for (const glm::dvec3& q : p) size = std::max(size, glm::length(q - p[0]));
+  const double eps = 1e-6 * size;
+  std::vector<std::vector<std::size_t>> faces;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = i + 1; j < p.size(); ++j)
+      for (std::size_t k = j + 1; k < p.size(); ++k) {
+        glm::dvec3 normal = glm::cross(p[j] - p[i], p[k] - p[i]);
+        const double length = glm::length(normal);
+        if (length <= 1e-12 * size * size) continue;
+        normal /= length;
+        bool below = true, above = true;
+        std::vector<std::size_t> on;
+        for (std::size_t m = 0; m < p.size(); ++m) {
+          const double d = glm::dot(normal, p[m] - p[i]);
+          if (d > eps) below = false;
+          if (d < -eps) above = false;
+          if (std::abs(d) <= eps) on.push_back(m);
+        }
+        if (below == above) continue;  // points on both sides, or all on the plane
+        if (!below) normal = -normal;  // outward: the others lie behind the face
+        if (std::find(faces.begin(), faces.end(), on) != faces.end()) continue;
+        faces.push_back(on);
+        // The face's points in order: a 2D hull (monotone chain) in the plane's (u, v), u x v the
+        // outward normal, so counter-clockwise there is counter-clockwise from outside.
+        const glm::dvec3 u = glm::normalize(p[on[1]] - p[on[0]]), v = glm::cross(normal, u);
+        std::vector<std::pair<glm::dvec2, std::size_t>> flat;
+        for (std::size_t m : on) flat.push_back({{glm::dot(p[m], u), glm::dot(p[m], v)}, m});
+        std::sort(flat.begin(), flat.end(), [](const auto& a, const auto& b) {
+          return a.first.x < b.first.x || (a.first.x == b.first.x && a.first.y < b.first.y);
+        });
+        auto turn = [](glm::dvec2 o, glm::dvec2 a, glm::dvec2 b) {
+          return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+        };
+        std::vector<std::size_t> ring;  // positions in flat
+        for (int pass = 0; pass < 2; ++pass) {
+          const std::size_t start = ring.size();
+          for (std::size_t t = 0; t < flat.size(); ++t) {
+            const std::size_t at = pass == 0 ? t : flat.size() - 1 - t;
+            while (ring.size() >= start + 2 && turn(flat[ring[ring.size() - 2]].first,
+                                                    flat[ring.back()].first, flat[at].first) <= eps * size)
+              ring.pop_back();
+            ring.push_back(at);
+          }
+          ring.pop_back();  // the chain's last point starts the other chain
+        }
+        for (std::size_t t = 1; t + 1 < ring.size(); ++t)
+          for (std::size_t corner : {ring[0], ring[t], ring[t + 1]})
+            triangles.push_back(glm::vec4(glm::vec3(p[flat[corner].second]), 1.0f));
+      }
+  return triangles;
+}
+
+// Every wedge of a caster (welded, world space): for each edge that may be a silhouette edge from
+// some point of the light's bounding rectangle, grown by `scale` (its two faces neither both
+// front-facing nor both back-facing from all four corners; a border edge always), the convex hull
+// of the edge and its endpoints extruded away from each corner down to y = kWedgeFloor. Every
+// shadow-volume side of the edge from a light point inside the rectangle lies in that hull (its
+// points are convex combinations of the corners' sides), so a receiver whose lights disagree lies
+// in some wedge. Appends the triangles (w = 1) and each wedge's (first vertex, vertex count).
+// Throws std::logic_error for an edge at or above the light (the lesson's scene has none).
+void penumbraWedges(const CasterEdges& caster, const AreaLight& area, float scale,
+                    std::vector<glm::vec4>& out, std::vector<std::pair<GLint, GLsizei>>& ranges) {
+  const glm::dvec2 half = 0.5 * static_cast<double>(scale) *
+                          glm::dvec2(area.shape == LightShape::Disk ? glm::vec2(area.size.x) : area.size);
+  const glm::dvec3 centre(area.centre);
+  const std::array<glm::dvec3, 4> corners{
+      centre + glm::dvec3(-half.x, 0.0, -half.y), centre + glm::dvec3(half.x, 0.0, -half.y),
+      centre + glm::dvec3(half.x, 0.0, half.y), centre + glm::dvec3(-half.x, 0.0, half.y)};
+  const std::vector<glm::vec3>& position = caster.welded.positions;
+  const std::vector<std::uint32_t>& index = caster.welded.indices;
+  auto faces = [&](std::int32_t face, const glm::dvec3& light) {
+    const glm::dvec3 a(position[index[3 * static_cast<std::size_t>(face)]]);
+    const glm::dvec3 b(position[index[3 * static_cast<std::size_t>(face) + 1]]);
+    const glm::dvec3 c(position[index[3 * static_cast<std::size_t>(face) + 2]]);
+    return glm::dot(glm::cross(b - a, c - a), light - a) > 0.0;
+  };
+  for (const Edge& e : caster.adjacency.edges) {
+    if (e.face0 >= 0 && e.face1 >= 0) {
+      bool allFront = true, allBack = true;
+      for (const glm::dvec3& c : corners) {
+        const bool f0 = faces(e.face0, c), f1 = faces(e.face1, c);
+        allFront = allFront && f0 && f1;
+        allBack = allBack && !f0 && !f1;
+      }
+      if (allFront || allBack) continue;  // never a silhouette edge
+    }
+    std::vector<glm::dvec3> points{glm::dvec3(position[e.v0]), glm::dvec3(position[e.v1])};
+    for (const glm::dvec3& c : corners)
+      for (std::size_t k = 0; k < 2; ++k) {
+        const glm::dvec3 q = points[k];
+        if (c.y - q.y < 1e-3) throw std::logic_error("a penumbra wedge's edge at or above the light");
+        points.push_back(q + (q.y - kWedgeFloor) / (c.y - q.y) * (q - c));
+      }
+    const std::vector<glm::vec4> hull = convexHull(points);
+    if (hull.empty()) continue;
+    ranges.push_back({static_cast<GLint>(out.size()), static_cast<GLsizei>(hull.size())});
+    out.insert(out.end(), hull.begin(), hull.end());
+  }
 }
 
 struct Object {
@@ -269,6 +403,7 @@ class SoftShadows final : public Lesson {
         flat_("common/flat.vert", "common/flat.frag"),
         volume_("common/volume.vert", "common/flat.frag"),
         resolve_("common/volume.vert", "10-soft-shadows/resolve.frag"),
+        lights_("common/light.vert", "10-soft-shadows/lights.frag"),
         groundMesh_(makePlane(kGroundHalf, kGroundDivisions)),
         matMesh_(matFrom(groundMesh_)),
         slabMesh_(makeCube(0.5f)),
@@ -281,17 +416,23 @@ class SoftShadows final : public Lesson {
         ballEdges_(transformed(ballMesh_, glm::translate(glm::mat4(1.0f), kBallCentre))) {
     window_.upload(
         {{-1, -1, 0, 1}, {1, -1, 0, 1}, {1, 1, 0, 1}, {-1, -1, 0, 1}, {1, 1, 0, 1}, {-1, 1, 0, 1}});
+    glGenTextures(1, &lightsTexture_);
   }
+  ~SoftShadows() override { glDeleteTextures(1, &lightsTexture_); }
+  SoftShadows(const SoftShadows&) = delete;
+  SoftShadows& operator=(const SoftShadows&) = delete;
 
   void render(Frame& f) override {
     const int n = f.option("lights");
     const bool kilgard = f.option("method") == 1;
     if (f.on("reference") && (f.option("casters") != 1 || f.option("size") == 0))
       throw UsageError("--set reference=1 needs casters=1 (the slab alone) and a light of size 1 or more");
+    if (f.on("wedges") && (kilgard || f.on("reference")))
+      throw UsageError("--set wedges=1 needs method=0 (counting) and reference=0");
     for (const char* name :
          {"lights", "rounds", "samples", "stencil_clears", "volume_triangles", "illumination_draws",
           "light_groups", "penumbra_width_x_milli", "penumbra_width_x_predicted_milli",
-          "penumbra_width_z_milli", "penumbra_width_z_predicted_milli"})
+          "penumbra_width_z_milli", "penumbra_width_z_predicted_milli", "wedges", "wedge_triangles"})
       f.count(name, 0);
     GLint framework = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framework);
@@ -339,6 +480,8 @@ class SoftShadows final : public Lesson {
       drawReference(f, area, viewProjection);
     } else if (kilgard) {
       kilgardLights(f, scene);
+    } else if (f.on("wedges")) {
+      wedgeLights(f, scene, area);
     } else {
       countingLights(f, scene);
     }
@@ -363,6 +506,21 @@ class SoftShadows final : public Lesson {
     // The stencil the frame ends with: the checked light's hard shadow (saved after its volumes).
     blit(saved_->fbo(), framework_, f.size, GL_STENCIL_BUFFER_BIT);
     glBindFramebuffer(GL_FRAMEBUFFER, framework_);
+    if (f.on("wedges") && f.on("show-wedges")) {  // the wedges' bit, kept in the saved stencil
+      glDisable(GL_DEPTH_TEST);
+      glEnable(GL_STENCIL_TEST);
+      glStencilFunc(GL_EQUAL, kWedgeBit, kWedgeBit);
+      glStencilMask(0);
+      glEnable(GL_BLEND);
+      glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+      volume_.set("transform", glm::mat4(1.0f));
+      volume_.set("colour", glm::vec4(0.1f, 0.85f, 0.95f, 0.5f));
+      window_.draw();
+      glDisable(GL_BLEND);
+      glDisable(GL_STENCIL_TEST);
+      glStencilMask(0xFF);
+      glEnable(GL_DEPTH_TEST);
+    }
     f.pass("resolve");
   }
 
@@ -372,10 +530,13 @@ class SoftShadows final : public Lesson {
     if (!f.on("shadow") || f.on("reference") || samples_.empty()) return std::nullopt;
     const bool kilgard = f.option("method") == 1;
     const std::uint8_t bit = static_cast<std::uint8_t>(1u << (checked_ % 8));
-    ShadowCheck check{{},
-                      samples_[static_cast<std::size_t>(checked_)],
-                      [kilgard, bit](std::uint8_t s) { return kilgard ? (s & bit) == 0 : s == 0; },
-                      true};
+    // With the wedges the saved stencil also holds the wedges' bit; the count is in the low bits.
+    const auto countMask = static_cast<std::uint8_t>(f.on("wedges") ? kCountBits : 0xFFu);
+    ShadowCheck check{
+        {},
+        samples_[static_cast<std::size_t>(checked_)],
+        [kilgard, bit, countMask](std::uint8_t s) { return kilgard ? (s & bit) == 0 : (s & countMask) == 0; },
+        true};
     for (const Object& o : sceneOf(f)) check.objects.push_back({o.mesh, o.model, o.caster, true});
     return check;
   }
@@ -456,35 +617,128 @@ class SoftShadows final : public Lesson {
       glStencilMask(0xFF);
       glClear(GL_STENCIL_BUFFER_BIT);  // this light's count starts at 0
       f.count("stencil_clears");
-      if (f.on("shadow")) {
-        volumeState(f);
-        glDepthFunc(GL_LESS);  // behind the scene: fail
-        glStencilFunc(GL_ALWAYS, 0, 0xFF);
-        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);   // behind: the ray leaves a volume
-        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);  // behind: it enters one
-        for (const CasterEdges* c : casters(f)) {
-          const ClosedVolume v = closedVolume(c->welded, c->adjacency, light, kToInfinity);
-          const std::size_t sides = 3 * v.sideTriangles, lightCap = 3 * v.lightCapTriangles;
-          volumeStream_.upload(v.triangles.vertices);
-          volume_.set("transform", f.projection * f.view);
-          volume_.set("colour", glm::vec4(1.0f, 0.85f, 0.2f, 1.0f));
-          volumeStream_.draw(0, static_cast<GLsizei>(sides));  // the sides
-          // The dark cap at infinity fails LESS by itself.
-          volumeStream_.draw(static_cast<GLint>(sides + lightCap),
-                             static_cast<GLsizei>(3 * v.darkCapTriangles));
-          glDepthFunc(GL_NEVER);  // the light cap lies on the caster's surface: never in front of it
-          volumeStream_.draw(static_cast<GLint>(sides), static_cast<GLsizei>(lightCap));
-          glDepthFunc(GL_LESS);
-          f.count("volume_triangles", v.triangles.triangleCount());
-        }
-        restoreState();
-      }
+      countVolumes(f, light, false);
       if (i == checked_) saveStencil();
       if (i == 0) endPass(f, "volumes");
       glEnable(GL_STENCIL_TEST);
       glStencilFunc(GL_EQUAL, 0, 0xFF);  // a count of 0: outside every volume
       glStencilMask(0x80);               // counts stay below 128 (two convex casters)
       glStencilOp(GL_KEEP, GL_KEEP, f.on("update-bit") ? GL_INVERT : GL_KEEP);  // 0 -> 128: added once
+      illuminate(f, scene, light);
+      if (i == 0) endPass(f, "illumination");
+    }
+    if (n > 1) endPass(f, "other-lights");
+    glStencilMask(0xFF);
+  }
+
+  // One light's closed volumes counted by z-fail into the stencil: in the whole stencil, or with
+  // the wedges (inWedges) into kCountBits only, and only on pixels whose kWedgeBit is set.
+  void countVolumes(Frame& f, const glm::vec4& light, bool inWedges) {
+    if (f.on("shadow")) {
+      volumeState(f);
+      glDepthFunc(GL_LESS);  // behind the scene: fail
+      if (inWedges) {
+        glStencilFunc(GL_EQUAL, kWedgeBit, kWedgeBit);
+        glStencilMask(kCountBits);  // INCR and DECR wrap modulo 16 there
+      } else {
+        glStencilFunc(GL_ALWAYS, 0, 0xFF);
+        glStencilMask(f.on("wedges") ? kCountBits : 0xFFu);
+      }
+      glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);   // behind: the ray leaves a volume
+      glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);  // behind: it enters one
+      for (const CasterEdges* c : casters(f)) {
+        const ClosedVolume v = closedVolume(c->welded, c->adjacency, light, kToInfinity);
+        const std::size_t sides = 3 * v.sideTriangles, lightCap = 3 * v.lightCapTriangles;
+        volumeStream_.upload(v.triangles.vertices);
+        volume_.set("transform", f.projection * f.view);
+        volume_.set("colour", glm::vec4(1.0f, 0.85f, 0.2f, 1.0f));
+        volumeStream_.draw(0, static_cast<GLsizei>(sides));  // the sides
+        // The dark cap at infinity fails LESS by itself.
+        volumeStream_.draw(static_cast<GLint>(sides + lightCap),
+                           static_cast<GLsizei>(3 * v.darkCapTriangles));
+        glDepthFunc(GL_NEVER);  // the light cap lies on the caster's surface: never in front of it
+        volumeStream_.draw(static_cast<GLint>(sides), static_cast<GLsizei>(lightCap));
+        glDepthFunc(GL_LESS);
+        f.count("volume_triangles", v.triangles.triangleCount());
+      }
+      restoreState();
+    }
+  }
+
+  // ---- penumbra wedges: N lights only where they can disagree ----------------------------------
+
+  void wedgeLights(Frame& f, const std::vector<Object>& scene, const AreaLight& area) {
+    const int n = f.option("lights");
+    glStencilMask(0xFF);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    f.count("stencil_clears");
+    // 1. The wedges into kWedgeBit, one at a time: z-fail parity in kTempBit is 1 exactly on the
+    //    surfaces inside a convex wedge; the wedge's faces then copy it into kWedgeBit and clear it.
+    if (f.on("shadow")) {
+      std::vector<glm::vec4> wedges;
+      std::vector<std::pair<GLint, GLsizei>> ranges;
+      const float scale = 1.02f * static_cast<float>(f.option("wedge-size")) / 100.0f;  // 2% to spare
+      for (const CasterEdges* c : casters(f)) penumbraWedges(*c, area, scale, wedges, ranges);
+      volumeState(f);
+      volumeStream_.upload(wedges);
+      for (const auto& [first, count] : ranges) {
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glStencilFunc(GL_ALWAYS, 0, 0xFF);
+        glStencilMask(kTempBit);
+        glStencilOp(GL_KEEP, GL_INVERT, GL_KEEP);  // a face behind the surface: one crossing
+        volumeStream_.draw(first, count);
+        glDisable(GL_DEPTH_TEST);
+        glStencilFunc(GL_EQUAL, kTempBit | kWedgeBit, kTempBit);  // inside: mark
+        glStencilMask(kWedgeBit);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        volumeStream_.draw(first, count);
+        glStencilFunc(GL_ALWAYS, 0, 0xFF);
+        glStencilMask(kTempBit);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_ZERO);  // kTempBit back to 0 for the next wedge
+        volumeStream_.draw(first, count);
+      }
+      glEnable(GL_DEPTH_TEST);
+      glDepthFunc(GL_LESS);
+      f.count("wedges", ranges.size());
+      f.count("wedge_triangles", wedges.size() / 3);
+      // A caster's own faces are shadowed by its volumes wherever they face away from the light
+      // (not only behind an edge): its pixels are marked too, through the ambient pass's depths.
+      glStencilFunc(GL_ALWAYS, kWedgeBit, 0xFF);
+      glStencilMask(kWedgeBit);
+      glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+      glDepthFunc(GL_EQUAL);
+      std::vector<Object> casterObjects;
+      for (const Object& o : scene)
+        if (o.caster) casterObjects.push_back(o);
+      drawScene(f, casterObjects, glm::vec4(0, 1, 0, 0), glm::vec3(0.0f), glm::vec3(0.0f), false);
+      glDepthFunc(GL_LESS);
+      glDisable(GL_STENCIL_TEST);
+      restoreState();
+    }
+    endPass(f, "wedges");
+    // 2. One light decides outside the wedges (all agree there): the checked light's count
+    //    everywhere, and every light added at once where it is 0.
+    countVolumes(f, samples_[static_cast<std::size_t>(checked_)], false);
+    saveStencil();
+    endPass(f, "volumes");
+    const GLuint tested = kWedgeBit | kCountBits | kAddedBit;
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_EQUAL, 0, tested);  // outside the wedges, lit
+    glStencilMask(kAddedBit);
+    glStencilOp(GL_KEEP, GL_KEEP, f.on("update-bit") ? GL_INVERT : GL_KEEP);
+    illuminate(f, scene, glm::vec4(0.0f), true);
+    // 3. Inside the wedges, the plain loop: each light's count, each light added where it is 0.
+    for (int i = 0; i < n; ++i) {
+      const glm::vec4 light = samples_[static_cast<std::size_t>(i)];
+      glStencilMask(kCountBits | kAddedBit);
+      glClear(GL_STENCIL_BUFFER_BIT);  // the wedges' bit stays
+      f.count("stencil_clears");
+      countVolumes(f, light, true);
+      glEnable(GL_STENCIL_TEST);
+      glStencilFunc(GL_EQUAL, kWedgeBit, tested);  // in a wedge, lit by light i
+      glStencilMask(kAddedBit);
+      glStencilOp(GL_KEEP, GL_KEEP, f.on("update-bit") ? GL_INVERT : GL_KEEP);
       illuminate(f, scene, light);
       if (i == 0) endPass(f, "illumination");
     }
@@ -529,7 +783,9 @@ class SoftShadows final : public Lesson {
 
   // One light added onto the ambient pass's surfaces where the stencil test (set by the caller)
   // passes.
-  void illuminate(Frame& f, const std::vector<Object>& scene, const glm::vec4& light) {
+  // allLights: every light of the round in one draw (outside the wedges), light unused.
+  void illuminate(Frame& f, const std::vector<Object>& scene, const glm::vec4& light,
+                  bool allLights = false) {
     glDepthMask(GL_FALSE);  // the surfaces stay
     if (f.on("depth-equal")) {
       glEnable(GL_DEPTH_TEST);
@@ -541,7 +797,7 @@ class SoftShadows final : public Lesson {
       glEnable(GL_BLEND);
       glBlendFunc(GL_ONE, GL_ONE);  // light adds up; alpha counts the lights that reached
     }
-    drawScene(f, scene, light, kLightColour * share(f), glm::vec3(0.0f), f.on("visibility"));
+    drawScene(f, scene, light, kLightColour * share(f), glm::vec3(0.0f), f.on("visibility"), allLights);
     f.count("illumination_draws");
     glDisable(GL_BLEND);
     glDisable(GL_STENCIL_TEST);
@@ -551,12 +807,20 @@ class SoftShadows final : public Lesson {
   }
 
   // visibility: receivers only, unshaded, 1/N of white each (the fraction of the light seen).
+  // allLights: every light of samples_ summed in one draw, each at `colour`; in visibility, the N
+  // shares added in the lights' order, as N blended draws would add them.
   void drawScene(const Frame& f, const std::vector<Object>& scene, glm::vec4 light, glm::vec3 colour,
-                 glm::vec3 ambient, bool visibility) {
+                 glm::vec3 ambient, bool visibility, bool allLights = false) {
     glEnable(GL_CULL_FACE);  // closed casters and the ground seen from above
     if (visibility) {
       const float s = share(f);
-      flat_.set("colour", glm::vec4(s, s, s, 1.0f));
+      glm::vec4 c(s, s, s, 1.0f);
+      if (allLights) {
+        float sum = 0.0f;
+        for (std::size_t i = 0; i < samples_.size(); ++i) sum += s;
+        c = glm::vec4(sum, sum, sum, static_cast<float>(samples_.size()));
+      }
+      flat_.set("colour", c);
       for (std::size_t k = scene.size(); k-- > 0;) {  // the mat before the ground, as below
         const Object& o = scene[k];
         if (o.caster) continue;  // the ground and the mat: the reference's receivers
@@ -566,19 +830,32 @@ class SoftShadows final : public Lesson {
       glDisable(GL_CULL_FACE);
       return;
     }
-    light_.set("viewProjection", f.projection * f.view);
-    light_.set("ambient", ambient);
-    light_.set("light", light);
-    light_.set("lightColour", colour);
-    light_.set("eye", f.eye);
-    light_.set("shininess", 24.0f);
+    const Program& program = allLights ? lights_ : light_;
+    program.set("viewProjection", f.projection * f.view);
+    program.set("lightColour", colour);
+    program.set("eye", f.eye);
+    program.set("shininess", 24.0f);
+    if (allLights) {
+      glActiveTexture(GL_TEXTURE1);
+      glBindTexture(GL_TEXTURE_2D, lightsTexture_);
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, static_cast<GLsizei>(samples_.size()), 1, 0, GL_RGBA,
+                   GL_FLOAT, samples_.data());
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      glActiveTexture(GL_TEXTURE0);
+      program.set("lights", 1);
+      program.set("count", static_cast<int>(samples_.size()));
+    } else {
+      light_.set("ambient", ambient);
+      light_.set("light", light);
+    }
     // Adding light, the mat goes before the ground it lies on: the surface the ambient pass left
     // on top is the one that takes the light (the other then fails the updated bit).
     const bool adding = colour != glm::vec3(0.0f);
     for (std::size_t k = 0; k < scene.size(); ++k) {
       const Object& o = scene[adding && k < 2 && scene.size() > 1 && !scene[1].caster ? 1 - k : k];
-      light_.set("model", o.model);
-      light_.set("colour", o.colour);
+      program.set("model", o.model);
+      program.set("colour", o.colour);
       o.gpu->draw();
     }
     glDisable(GL_CULL_FACE);
@@ -696,7 +973,12 @@ class SoftShadows final : public Lesson {
     return true;
   }
 
-  Program light_, flat_, volume_, resolve_;
+  // Stencil bits with the wedges: the count in the low four (two convex casters count to 2,
+  // wrapping modulo 16 on the way), a wedge's z-fail parity, the wedges' union, the added bit.
+  static constexpr GLuint kCountBits = 0x0F, kTempBit = 0x20, kWedgeBit = 0x40, kAddedBit = 0x80;
+
+  Program light_, flat_, volume_, resolve_, lights_;
+  GLuint lightsTexture_ = 0;
   Mesh groundMesh_, matMesh_, slabMesh_, ballMesh_;
   GpuMesh ground_, mat_, slab_, ball_;
   CasterEdges slabEdges_, ballEdges_;  // welded, in world space (the scene stands still)
