@@ -90,12 +90,12 @@ LessonInfo lessonInfo() {
       {"light", 'L', "the light whose hard shadow the final stencil holds (the one --oracle checks)", 0,
        kMaxLights - 1},
       {"shadow", 'H', "shadows at all (off: every light reaches everything)", 1},
-      {"wedges", 'P',
+      {"wedges", '1',
        "penumbra wedges (counting only): the N-light loop only in the wedges' pixels, one light's hard\n"
        "      shadow deciding everywhere else",
        0},
-      {"show-wedges", 'V', "tint the pixels the wedges mark (wedges only)", 0},
-      {"wedge-size", 'S',
+      {"show-wedges", '2', "tint the pixels the wedges mark (wedges only)", 0},
+      {"wedge-size", '3',
        "the light the wedges are built from, in percent of the real one (test hook: under 100 the wedges\n"
        "      miss part of the penumbra)",
        100, 100},
