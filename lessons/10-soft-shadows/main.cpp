@@ -693,7 +693,7 @@ class SoftShadows final : public Lesson {
         glStencilMask(kWedgeBit);
         glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
         volumeStream_.draw(first, count);
-        glStencilFunc(GL_ALWAYS, 0, 0xFF);
+        glStencilFunc(GL_EQUAL, kTempBit, kTempBit);  // only where it is set: the rest fails early
         glStencilMask(kTempBit);
         glStencilOp(GL_KEEP, GL_KEEP, GL_ZERO);  // kTempBit back to 0 for the next wedge
         volumeStream_.draw(first, count);
