@@ -4,7 +4,7 @@
     plot_sweeps.py SWEEP IN.csv OUT.svg
 
 SWEEP names the sweep (its lesson): 03-recursive-mirrors, 05-light-blocking,
-09-cutout-extrusion or 16-fast-robust-shadows; IN.csv is what tests/sweeps/<sweep>_sweep
+09-cutout-extrusion, 10-soft-shadows or 16-fast-robust-shadows; IN.csv is what tests/sweeps/<sweep>_sweep
 wrote; OUT.svg is replaced only once the plot is drawn. A missing or malformed CSV, an unknown
 sweep or a bad command line gets one line on stderr and exit 2.
 
@@ -328,10 +328,87 @@ def plot_fast_shadows(path):
     return fig
 
 
+# Lesson 10: the penumbra's error against the light's samples and against time, per sampling
+# pattern and light shape; the fitted slope of each in the legend.
+def plot_soft_shadows(path):
+    rows = read_rows(path, ["lights", "rounds", "samples", "penumbra_rms", "frame_ms"], text=["shape", "pattern"])
+    if min(r["penumbra_rms"] for r in rows) <= 0 or min(r["samples"] for r in rows) <= 0:
+        raise BadInput(f"{path}: an error or a sample count of 0 or less cannot go on the log axes")
+    series = []
+    for r in rows:
+        key = (r["shape"], r["pattern"])
+        if key not in series:
+            series.append(key)
+    plt = pyplot()
+    fig, (err, ms, key) = plt.subplots(1, 3, figsize=(13, 4.2), layout="constrained",
+                                       gridspec_kw={"width_ratios": [1, 1, 0.62]})
+    for i, (shape, pattern) in enumerate(series):
+        s = sorted(select(rows, path, "series", shape=shape, pattern=pattern), key=lambda r: r["samples"])
+        xs, ys = [r["samples"] for r in s], [r["penumbra_rms"] for r in s]
+        # Least squares on log-log: the error falls as samples^slope (-0.5 for independent samples).
+        # Fitted from 4 samples on, as the sweep's summary does.
+        fit = [(x, y) for x, y in zip(xs, ys) if x >= 4]
+        slope = 0.0
+        if len(fit) > 1:
+            lx, ly = [math.log(x) for x, _ in fit], [math.log(y) for _, y in fit]
+            mx, my = sum(lx) / len(lx), sum(ly) / len(ly)
+            den = sum((x - mx) ** 2 for x in lx)
+            slope = sum((x - mx) * (y - my) for x, y in zip(lx, ly)) / den if den > 0 else 0.0
+        style = dict(color=f"C{i % 10}", linestyle="--" if shape == "disk" else "-",
+                     marker="o" if "progressive" not in pattern else "x", markersize=3.5)
+        err.plot(xs, ys, label=f"{shape}, {pattern} (slope {slope:.2f})", **style)
+        if "progressive" not in pattern:  # a progressive row's time is one round's, not the image's
+            ms.plot([r["frame_ms"] for r in s], ys, **style)
+    for ax in (err, ms):
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        plain_log(ax.yaxis)
+        plain_log(ax.xaxis)
+        ax.grid(True, which="major", alpha=0.3)
+        ax.set_ylabel("RMS error in the penumbra (levels of 255)")
+    err.set_xlabel("samples of the light (lights x rounds)")
+    err.set_title("Error against samples")
+    ms.set_xlabel("time per frame (ms, 320x240, llvmpipe)")
+    ms.set_title("Error against time (progressive rows left out)")
+    key.axis("off")
+    key.legend(*err.get_legend_handles_labels(), loc="center", fontsize=8, frameon=False,
+               title="light, samples (fitted slope)")
+    return fig
+
+
+# Lesson 14: time per frame against the primitives of the box-minus-spheres grid, per algorithm.
+def plot_csg(path):
+    rows = read_rows(path, ["primitives", "frame_ms", "passes"], text=["scene", "method"])
+    methods = []
+    for r in rows:
+        if r["method"] not in methods:
+            methods.append(r["method"])
+    plt = pyplot()
+    fig, (ms, passes) = plt.subplots(1, 2, figsize=(10, 4), layout="constrained")
+    for i, method in enumerate(methods):
+        s = sorted(select(rows, path, "method", method=method), key=lambda r: r["primitives"])
+        style = dict(color=f"C{i // 2}", linestyle="--" if "queries" in method else "-", marker="o", markersize=3.5)
+        ms.plot([r["primitives"] for r in s], [r["frame_ms"] for r in s], label=method, **style)
+        passes.plot([r["primitives"] for r in s], [r["passes"] for r in s], label=method, **style)
+    for ax, what in ((ms, "time per frame (ms, 320x240, llvmpipe)"), (passes, "passes per frame")):
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        plain_log(ax.xaxis)
+        plain_log(ax.yaxis)
+        ax.grid(True, which="major", alpha=0.3)
+        ax.set_xlabel("primitives (a box minus a k x k grid of spheres)")
+        ax.set_ylabel(what)
+    ms.set_title("Time")
+    passes.set_title("Passes")
+    passes.legend(fontsize=8)
+    return fig
+
+
 SWEEPS = {
     "03-recursive-mirrors": plot_recursive_mirrors,
     "05-light-blocking": plot_light_blocking,
     "09-cutout-extrusion": plot_cutout_extrusion,
+    "10-soft-shadows": plot_soft_shadows,
     "16-fast-robust-shadows": plot_fast_shadows,
 }
 
