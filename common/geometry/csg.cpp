@@ -320,7 +320,7 @@ CsgImage rayCastCsg(const std::vector<CsgPrimitive>& primitives, const CsgTree& 
 }
 
 CsgReport compareCsg(const CsgImage& expected, const std::vector<float>& depth,
-                     const std::vector<int>& primitive, float depthTolerance) {
+                     const std::vector<int>& primitive, float depthTolerance, float edgeDepthJump) {
   const glm::ivec2 size = expected.size;
   const std::size_t n = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y);
   if (expected.depth.size() != n || expected.primitive.size() != n || depth.size() != n ||
@@ -336,8 +336,10 @@ CsgReport compareCsg(const CsgImage& expected, const std::vector<float>& depth,
       for (int dy = -1; dy <= 1 && !edge; ++dy)
         for (int dx = -1; dx <= 1 && !edge; ++dx) {
           const int nx = std::clamp(x + dx, 0, size.x - 1), ny = std::clamp(y + dy, 0, size.y - 1);
-          edge = expected.primitive[static_cast<std::size_t>(ny) * static_cast<std::size_t>(size.x) +
-                                    static_cast<std::size_t>(nx)] != expected.primitive[i];
+          const std::size_t j =
+              static_cast<std::size_t>(ny) * static_cast<std::size_t>(size.x) + static_cast<std::size_t>(nx);
+          edge = expected.primitive[j] != expected.primitive[i] ||
+                 std::abs(expected.depth[j] - expected.depth[i]) > edgeDepthJump;
         }
       const bool samePrimitive = primitive[i] == expected.primitive[i];
       const float error = std::abs(depth[i] - expected.depth[i]);

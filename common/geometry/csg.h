@@ -114,9 +114,10 @@ struct CsgReport {
 
 // A rendering's depth and primitive per pixel (same layout as CsgImage) against the ray cast. A
 // pixel is on an edge when a pixel of its 3x3 neighbourhood shows another primitive in the ray
-// cast. depthTolerance is in window depth units. Throws std::invalid_argument when the sizes do
-// not match.
+// cast, or the same one more than edgeDepthJump away in depth (a primitive's silhouette over
+// itself, a torus' near side over its far side). depthTolerance and edgeDepthJump are in window
+// depth units. Throws std::invalid_argument when the sizes do not match.
 CsgReport compareCsg(const CsgImage& expected, const std::vector<float>& depth,
-                     const std::vector<int>& primitive, float depthTolerance);
+                     const std::vector<int>& primitive, float depthTolerance, float edgeDepthJump = 1e-3f);
 
 }  // namespace stencil

@@ -202,5 +202,11 @@ TEST(Csg, CompareForgivesOnlyEdges) {
   EXPECT_FALSE(r.passed());
   EXPECT_NEAR(r.largestDepthError, 0.1f, 1e-6f);
   EXPECT_TRUE(compareCsg(expected, expected.depth, expected.primitive, 0.0f).passed());
+  // A jump in depth within one primitive is an edge too: pixel 0 beside a pixel 0.01 further.
+  expected.depth = {0.5f, 0.51f, 0.51f, 1.0f};
+  const CsgReport jump = compareCsg(expected, {0.51f, 0.51f, 0.51f, 1.0f}, expected.primitive, 1e-3f);
+  EXPECT_EQ(jump.depthDisagreements, 1u);
+  EXPECT_EQ(jump.onEdges, 1u);
+  EXPECT_FALSE(compareCsg(expected, {0.51f, 0.51f, 0.51f, 1.0f}, expected.primitive, 1e-3f, 0.1f).passed());
   EXPECT_THROW(compareCsg(expected, {0.5f}, {0}, 0.0f), std::invalid_argument);
 }
