@@ -95,8 +95,8 @@ LessonInfo lessonInfo() {
       {"op", 'O', "two solids: 0 A + B, 1 A * B, 2 A - B, 3 B - A", kAMinusB, 3},
       {"scene", 'N',
        "Goldfeather's scene: 0 the two solids (by op), 1 cube * sphere - three cylinders,\n"
-       "      2 A - (B - C), 3 a torus (convexity 2) minus a box",
-       0, 3},
+       "      2 A - (B - C), 3 a torus (convexity 2) minus a box, 4 a box minus a 5x5 grid of spheres",
+       0, 4},
       {"convexity", 'C', "Goldfeather: the layers tried per target primitive (its convexity bound)", 1, 8, 1},
       {"queries", 'Q', "Goldfeather: stop at the first layer an occlusion query finds empty", 0},
       {"stencil", 'T', "trim by the stencil (off: every candidate surface kept, the result wrong)", 1},
@@ -140,6 +140,10 @@ LessonInfo lessonInfo() {
       {"layered-rounded-cube",
        "layered Goldfeather on the rounded cube",
        {{"method", kLayered}, {"scene", 1}}},
+      {"goldfeather-grid",
+       "a box minus 25 spheres: 25 trimming primitives, more than the 8 stencil bits, flushed every 8",
+       {{"method", kGoldfeather}, {"scene", 4}}},
+      {"layered-grid", "the box minus 25 spheres, layered", {{"method", kLayered}, {"scene", 4}}},
   };
   info.passes = {"surface", "count", "keep", "far", "layers", "select", "parity", "merge"};
   info.camera.target = {0.2f, 0.2f, 0.2f};
@@ -203,6 +207,20 @@ CsgScene goldfeatherScene(int scene, int op) {
           {"C", makeCube(0.3f), translate(id, {0.55f, 0.55f, 0.55f}), {0.3f, 0.8f, 0.35f}});
       s.expression = "A - (B - C)";
       return s;
+    case 4: {  // OpenCSG's benchmark: a box minus a 5x5 grid of spheres, 25 trimmers per target
+      s.primitives.push_back(
+          {"box", makeCube(1.0f), glm::scale(id, {1.3f, 0.4f, 1.3f}), {0.95f, 0.55f, 0.2f}});
+      s.expression = "box";
+      const Mesh sphere = makeSphere(0.3f, 24, 12);
+      for (int i = 0; i < 25; ++i) {
+        const std::string name = "s" + std::to_string(i);
+        const glm::vec3 at(-1.0f + 0.5f * static_cast<float>(i % 5), 0.4f,
+                           -1.0f + 0.5f * static_cast<float>(i / 5));
+        s.primitives.push_back({name, sphere, translate(id, at), {0.25f, 0.5f, 0.95f}});
+        s.expression += " - " + name;
+      }
+      return s;
+    }
     default:  // a ring cut through on its near side: the far side shows through the cut
       s.primitives.push_back({"T",
                               makeTorus(1.1f, 0.4f, 48, 24),
@@ -626,9 +644,10 @@ class Csg final : public Lesson {
   void drawQuad(const glm::vec4& colour, float depth) {
     flat_.set("transform", glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 2.0f * depth - 1.0f)));
     flat_.set("colour", colour);
-    glDisable(GL_CULL_FACE);
+    const bool culling = glIsEnabled(GL_CULL_FACE);
+    glDisable(GL_CULL_FACE);  // the quad covers every pixel whichever faces are being culled
     quad_.draw();
-    glEnable(GL_CULL_FACE);
+    if (culling) glEnable(GL_CULL_FACE);  // as the caller had it
   }
   void farQuad() { drawQuad(glm::vec4(0.0f), 1.0f); }
 

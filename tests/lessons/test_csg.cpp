@@ -2,9 +2,9 @@
 // pixel, the depth and the primitive the CPU CSG ray cast finds (edges aside), at two times; the
 // variants that show a failure (no stencil, a convexity bound too low) are caught by the same
 // check; Goldfeather draws the demo's picture; the pass counts are the formulas' (two surfaces of
-// four passes; Goldfeather n c select, n c (n - 1) parity; layered k select, k n parity, k the
-// largest depth complexity of the product's target faces); the occlusion-query early stop tries
-// one empty layer more and changes nothing in the picture.
+// four passes; Goldfeather n c select, n c (n - 1) parity, 8 parity bits per push to the far plane; layered k
+// select, k n parity, k the largest depth complexity of the product's target faces); the occlusion-query
+// early stop tries one empty layer more and changes nothing in the picture.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -34,9 +34,9 @@ void expectRayCastAgrees(const LessonRun& r, const std::string& what) {
 }  // namespace
 
 TEST(Csg, EverySolidIsTheRayCast) {
-  for (const char* variant :
-       {"a-minus-b", "union", "intersection", "b-minus-a", "goldfeather", "goldfeather-rounded-cube",
-        "goldfeather-nested", "goldfeather-torus", "layered-torus", "layered-rounded-cube"})
+  for (const char* variant : {"a-minus-b", "union", "intersection", "b-minus-a", "goldfeather",
+                              "goldfeather-rounded-cube", "goldfeather-nested", "goldfeather-torus",
+                              "layered-torus", "layered-rounded-cube", "goldfeather-grid", "layered-grid"})
     for (const char* time : {"1", "4"}) {
       const auto r =
           run(variant, std::string("--variant ") + variant + " --set oracle=1 --time " + time, true);
@@ -103,6 +103,15 @@ TEST(Csg, PassCountsAreTheFormulas) {
   EXPECT_EQ(k, 3);
   EXPECT_EQ(r->count("select_passes"), k);
   EXPECT_EQ(r->count("parity_passes"), k * 2);
+  // More trimming primitives than stencil bits: the box minus 25 spheres, n = 26. Each target's 25
+  // trimmers take 8 bits at a time, ceil(25 / 8) = 4 pushes to the far plane per layer; layered,
+  // ceil(26 / 8) = 4 per layer.
+  r = run("grid", "--variant goldfeather-grid", true);
+  EXPECT_EQ(r->count("parity_passes"), 26 * 25);
+  EXPECT_EQ(r->count("far_passes"), 26 * 4);
+  r = run("layered-grid", "--variant layered-grid", true);
+  EXPECT_EQ(r->count("parity_passes"), r->count("layers_counted") * 26);
+  EXPECT_EQ(r->count("far_passes"), r->count("layers_counted") * 4);
   r = run("layered-rounded", "--variant layered-rounded-cube", true);
   EXPECT_EQ(r->count("select_passes"), r->count("layers_counted"));
   EXPECT_EQ(r->count("parity_passes"), r->count("layers_counted") * 5);
