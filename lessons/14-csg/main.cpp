@@ -82,6 +82,19 @@ OrbitCamera fromTheLeft() {
   return c;
 }
 
+// The eye inside B, outside A, looking at A: B's front faces lie behind the eye, only its back
+// faces are drawn in front of A.
+OrbitCamera insideB() {
+  OrbitCamera c;
+  c.target = {0.0f, 0.0f, 0.0f};
+  c.distance = 1.78f;  // the eye 0.7 from B's centre, on the far side from A; B's radius 0.85
+  c.azimuthDeg = 75.4f;
+  c.elevationDeg = 24.6f;
+  c.fovyDeg = 70.0f;
+  c.farPlane = 30.0f;
+  return c;
+}
+
 LessonInfo lessonInfo() {
   LessonInfo info;
   info.id = "14-csg";
@@ -140,6 +153,12 @@ LessonInfo lessonInfo() {
       {"layered-rounded-cube",
        "layered Goldfeather on the rounded cube",
        {{"method", kLayered}, {"scene", 1}}},
+      {"eye-in-b", "A - B with the eye inside B: the count starts at 0 outside B", {}, {}, insideB()},
+      {"goldfeather-eye-in-b",
+       "Goldfeather's A - B with the eye inside B",
+       {{"method", kGoldfeather}},
+       {},
+       insideB()},
       {"goldfeather-grid",
        "a box minus 25 spheres: 25 trimming primitives, more than the 8 stencil bits, flushed every 8",
        {{"method", kGoldfeather}, {"scene", 4}}},
