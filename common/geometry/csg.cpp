@@ -242,6 +242,47 @@ bool contains(const SumOfProducts& sop, const std::vector<bool>& in) {
   return false;
 }
 
+std::vector<int> subtractionSequence(int n) {
+  if (n < 0 || n > 1000) throw std::invalid_argument("subtractionSequence: n must be within 0..1000");
+  std::vector<int> sequence;
+  for (int i = 0; i < n; ++i) sequence.push_back(i);  // the first run, up
+  for (int run = 1; run < n; ++run) {
+    // Each further run turns at the last entry and covers the other n - 1.
+    const bool down = run % 2 == 1;
+    const int from = sequence.back();
+    for (int k = 1; k < n; ++k) sequence.push_back(down ? from - k : from + k);
+  }
+  return sequence;
+}
+
+bool containsEveryOrdering(const std::vector<int>& sequence, int n) {
+  if (n < 0 || n > 8) throw std::invalid_argument("containsEveryOrdering: n must be within 0..8");
+  std::vector<int> ordering(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) ordering[static_cast<std::size_t>(i)] = i;
+  do {
+    std::size_t at = 0;
+    for (int v : sequence)
+      if (at < ordering.size() && v == ordering[at]) ++at;
+    if (at < ordering.size()) return false;
+  } while (std::next_permutation(ordering.begin(), ordering.end()));
+  return true;
+}
+
+std::size_t shortestOrderingSequence(int n) {
+  if (n < 0 || n > 4) throw std::invalid_argument("shortestOrderingSequence: n must be within 0..4");
+  if (n <= 1) return static_cast<std::size_t>(n);
+  for (std::size_t length = static_cast<std::size_t>(n);; ++length) {
+    // Every sequence of this length over 0..n-1, as the digits of a counter in base n.
+    std::vector<int> sequence(length, 0);
+    for (;;) {
+      if (containsEveryOrdering(sequence, n)) return length;
+      std::size_t digit = 0;
+      while (digit < length && ++sequence[digit] == n) sequence[digit++] = 0;
+      if (digit == length) break;
+    }
+  }
+}
+
 CsgImage rayCastCsg(const std::vector<CsgPrimitive>& primitives, const CsgTree& tree,
                     const glm::mat4& viewProjection, glm::ivec2 size) {
   checkTree(tree);

@@ -73,6 +73,24 @@ SumOfProducts normalize(const CsgTree&, std::size_t maxProducts = kMaxCsgProduct
 bool contains(const CsgTree&, const std::vector<bool>& inside);
 bool contains(const SumOfProducts&, const std::vector<bool>& inside);
 
+// ---- SCS: sequenced convex subtraction (Stewart, Leach and John 1998) ---------------------------
+
+// The order SCS subtracts n convex primitives in: every ordering of 0..n-1 must be a subsequence
+// (the primitives may lie along a ray in any order). This one runs up 0..n-1, then down n-2..0,
+// up 1..n-1, and so on, n runs in all, each after the first one shorter: n(n - 1) + 1 entries.
+// The shortest such sequences are known to have (n - 1)^2 + 3 entries for n >= 3 (1 and 3 for
+// n = 1 and 2), fewer from n = 4 on; this is not one of those. Throws std::invalid_argument for
+// n < 0 or n > 1000.
+std::vector<int> subtractionSequence(int n);
+
+// Whether every ordering of 0..n-1 is a subsequence of `sequence` (n! orderings: n <= 8, else
+// std::invalid_argument).
+bool containsEveryOrdering(const std::vector<int>& sequence, int n);
+
+// The length of the shortest sequence over 0..n-1 that contains every ordering, by exhaustive
+// search (n <= 4, else std::invalid_argument): the known minimum, derived.
+std::size_t shortestOrderingSequence(int n);
+
 // ---- the CSG ray cast ---------------------------------------------------------------------------
 
 // A closed, outward-wound primitive mesh placed in the world.

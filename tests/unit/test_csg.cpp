@@ -210,3 +210,31 @@ TEST(Csg, CompareForgivesOnlyEdges) {
   EXPECT_FALSE(compareCsg(expected, {0.51f, 0.51f, 0.51f, 1.0f}, expected.primitive, 1e-3f, 0.1f).passed());
   EXPECT_THROW(compareCsg(expected, {0.5f}, {0}, 0.0f), std::invalid_argument);
 }
+
+TEST(Csg, SubtractionSequencesHoldEveryOrdering) {
+  for (int n = 0; n <= 7; ++n) {
+    const std::vector<int> sequence = subtractionSequence(n);
+    EXPECT_EQ(sequence.size(), static_cast<std::size_t>(n == 0 ? 0 : n * (n - 1) + 1)) << n;
+    EXPECT_TRUE(containsEveryOrdering(sequence, n)) << n;
+    if (n >= 2) {  // one entry fewer and some ordering is missing
+      std::vector<int> shorter(sequence.begin(), sequence.end() - 1);
+      EXPECT_FALSE(containsEveryOrdering(shorter, n)) << n;
+    }
+  }
+  EXPECT_EQ(subtractionSequence(3), std::vector<int>({0, 1, 2, 1, 0, 1, 2}));
+  EXPECT_THROW(subtractionSequence(-1), std::invalid_argument);
+  EXPECT_THROW(containsEveryOrdering({}, 9), std::invalid_argument);
+}
+
+TEST(Csg, ShortestOrderingSequencesAreTheKnownMinimum) {
+  // By exhaustive search: 1, 3, 7, 12 for n = 1..4. From n = 3 on that is (n - 1)^2 + 3, which the
+  // simple sequence's n(n - 1) + 1 meets at n = 3 and exceeds from n = 4 on (13 against 12).
+  const std::size_t found[] = {0, shortestOrderingSequence(1), shortestOrderingSequence(2),
+                               shortestOrderingSequence(3), shortestOrderingSequence(4)};
+  EXPECT_EQ(found[1], 1u);
+  EXPECT_EQ(found[2], 3u);
+  for (int n = 3; n <= 4; ++n) EXPECT_EQ(found[n], static_cast<std::size_t>((n - 1) * (n - 1) + 3)) << n;
+  EXPECT_EQ(subtractionSequence(3).size(), found[3]);
+  EXPECT_EQ(subtractionSequence(4).size(), found[4] + 1);
+  EXPECT_THROW(shortestOrderingSequence(5), std::invalid_argument);
+}
