@@ -54,7 +54,7 @@ namespace {
 
 // The two-solid method's operations (the "op" option), and the methods.
 constexpr int kUnion = 0, kIntersection = 1, kAMinusB = 2, kBMinusA = 3;
-constexpr int kTwoSolids = 0, kGoldfeather = 1, kLayered = 2;
+constexpr int kTwoSolids = 0, kGoldfeather = 1, kLayered = 2, kScs = 3;
 // The two-solid method's stencil: bit 0 the count's parity, bits 7 and 6 where A's and B's
 // surfaces were kept (the primitive each pixel shows).
 constexpr GLuint kParity = 0x01, kKeptA = 0x80, kKeptB = 0x40;
@@ -104,7 +104,10 @@ LessonInfo lessonInfo() {
       "differences of two convex solids; any expression as a sum of products by Goldfeather's parity bits,\n"
       "with a convexity bound or the layered count.";
   info.options = {
-      {"method", 'M', "0 two convex solids (the demo), 1 Goldfeather, 2 layered Goldfeather", kTwoSolids, 2},
+      {"method", 'M',
+       "0 two convex solids (the demo), 1 Goldfeather, 2 layered Goldfeather,\n"
+       "      3 SCS (convex primitives only)",
+       kTwoSolids, 3},
       {"op", 'O', "two solids: 0 A + B, 1 A * B, 2 A - B, 3 B - A", kAMinusB, 3},
       {"scene", 'N',
        "Goldfeather's scene: 0 the two solids (by op), 1 cube * sphere - three cylinders,\n"
@@ -159,12 +162,24 @@ LessonInfo lessonInfo() {
        {{"method", kGoldfeather}},
        {},
        insideB()},
+      {"scs-rounded-cube",
+       "SCS: the intersection by counting, the cylinders by a subtraction sequence",
+       {{"method", kScs}, {"scene", 1}}},
+      {"scs-grid",
+       "SCS on the box minus 25 spheres: a sequence of 25 * 24 + 1 = 601 subtractions",
+       {{"method", kScs}, {"scene", 4}}},
+      {"scs-torus",
+       "SCS given a torus: the furthest front face is not where the ring begins (wrong)",
+       {{"method", kScs}, {"scene", 3}},
+       {},
+       throughTheCut()},
       {"goldfeather-grid",
        "a box minus 25 spheres: 25 trimming primitives, more than the 8 stencil bits, flushed every 8",
        {{"method", kGoldfeather}, {"scene", 4}}},
       {"layered-grid", "the box minus 25 spheres, layered", {{"method", kLayered}, {"scene", 4}}},
   };
-  info.passes = {"surface", "count", "keep", "far", "layers", "select", "parity", "merge"};
+  info.passes = {"surface", "count",  "keep",      "far",      "layers",
+                 "select",  "parity", "intersect", "subtract", "merge"};
   info.camera.target = {0.2f, 0.2f, 0.2f};
   info.camera.distance = 5.5f;
   info.camera.azimuthDeg = 30.0f;
@@ -296,6 +311,8 @@ class Csg final : public Lesson {
 
     if (method == kTwoSolids)
       twoSolidsMethod(f, scene, f.option("op"));
+    else if (method == kScs)
+      scs(f, normalize(tree));
     else
       goldfeather(f, scene, normalize(tree), method == kLayered);
 
@@ -429,6 +446,111 @@ class Csg final : public Lesson {
       }
     }
     (void)scene;
+  }
+
+  // ---- SCS ---------------------------------------------------------------------------------------
+
+  // Per product, in the work buffer: the intersection of its intersected primitives as the
+  // furthest front face that no back face lies in front of (convex primitives: that is where the
+  // ray enters all of them), then each subtracted primitive in the order of the subtraction
+  // sequence moves the surface to its back face where the surface lies inside it, then the
+  // intersection clips again; the surface is merged into the frame as Goldfeather's is.
+  void scs(Frame& f, const SumOfProducts& sop) {
+    f.count("products", sop.products.size());
+    for (const char* name : {"sequence_length", "subtraction_passes", "clip_passes", "merge_passes"})
+      f.count(name, 0);
+    GLint frameBinding = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &frameBinding);
+    const auto frame = static_cast<GLuint>(frameBinding);
+    workBuffer(f.size);
+    merge_.set("productDepth", 0);
+    merge_.set("tolerance", 1e-6f);
+    for (const CsgProduct& p : sop.products) {
+      glBindFramebuffer(GL_FRAMEBUFFER, work_);
+      glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+      glEnable(GL_DEPTH_TEST);
+      glEnable(GL_STENCIL_TEST);
+      glStencilMask(0xFF);
+      glClearDepth(0.0);  // the furthest front face wins: start at the near plane
+      glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+      glClearDepth(1.0);
+      // 1. The intersected primitives' front faces, the furthest kept: where the ray has entered
+      // them all, if it is inside them all there.
+      glDepthFunc(GL_GREATER);
+      glDepthMask(GL_TRUE);
+      glStencilFunc(GL_ALWAYS, 0, 0);
+      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+      glCullFace(GL_BACK);
+      for (int a : p.intersected) drawDepth(a);
+      clipByIntersection(f, p);
+      workPass(f, "intersect");
+      // 2. The subtraction sequence: where the surface lies inside s (s's front face in front of
+      // it, its back face behind), the surface moves back to s's back face.
+      const std::vector<int> order = subtractionSequence(static_cast<int>(p.subtracted.size()));
+      f.count("sequence_length", order.size());
+      for (int i : order) {
+        const int s = p.subtracted[static_cast<std::size_t>(i)];
+        glStencilMask(0xFF);
+        glClear(GL_STENCIL_BUFFER_BIT);
+        glDepthFunc(GL_LESS);  // s's front face in front of the surface
+        glDepthMask(GL_FALSE);
+        glStencilFunc(GL_ALWAYS, 1, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        glCullFace(GL_BACK);
+        drawDepth(s);
+        glDepthFunc(GL_GREATER);  // and its back face behind it: the surface is inside s
+        glDepthMask(GL_TRUE);     // it moves to that back face
+        glStencilFunc(GL_EQUAL, 1, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        glCullFace(GL_FRONT);
+        drawDepth(s);
+        f.count("subtraction_passes", 2);
+      }
+      workPass(f, "subtract");
+      // 3. A surface moved past an intersected primitive's back face left the intersection.
+      clipByIntersection(f, p);
+      workPass(f, "intersect");
+      // 4. Merge, as Goldfeather does.
+      glBindFramebuffer(GL_FRAMEBUFFER, frame);
+      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+      glDepthFunc(GL_LESS);
+      glDepthMask(GL_TRUE);
+      glStencilMask(0xFF);
+      glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+      glActiveTexture(GL_TEXTURE0);
+      glBindTexture(GL_TEXTURE_2D, workDepth_);
+      std::vector<int> targets = p.intersected;
+      targets.insert(targets.end(), p.subtracted.begin(), p.subtracted.end());
+      for (int x : targets) {
+        glStencilFunc(GL_ALWAYS, std::min(x + 1, 255), 0xFF);
+        drawTargets(p, {x}, true);
+      }
+      glBindTexture(GL_TEXTURE_2D, 0);
+      f.count("merge_passes");
+      f.pass("merge");
+    }
+  }
+
+  // Counts the intersected primitives whose back face lies behind the surface (or on it) and sends
+  // every pixel where that is not all of them to the far plane: the surface lies outside one, or a
+  // primitive does not cover the pixel at all (no back face to count; checking for a back face in
+  // front would miss that one).
+  void clipByIntersection(Frame& f, const CsgProduct& p) {
+    glStencilMask(0xFF);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    glDepthFunc(GL_GEQUAL);  // the back face behind the surface: the surface is before it leaves
+    glDepthMask(GL_FALSE);
+    glStencilFunc(GL_ALWAYS, 0, 0);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+    glCullFace(GL_FRONT);
+    for (int a : p.intersected) drawDepth(a);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_TRUE);
+    glStencilMask(0);
+    glStencilFunc(GL_NOTEQUAL, static_cast<GLint>(std::min<std::size_t>(p.intersected.size(), 255)), 0xFF);
+    farQuad();
+    glStencilMask(0xFF);
+    f.count("clip_passes");
   }
 
   static bool subtracted(const CsgProduct& p, int primitive) {

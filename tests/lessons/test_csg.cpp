@@ -1,10 +1,12 @@
 // Lesson 14's claims, measured on its output: every variant that claims a solid shows, pixel for
 // pixel, the depth and the primitive the CPU CSG ray cast finds (edges aside), at two times; the
-// variants that show a failure (no stencil, a convexity bound too low) are caught by the same
-// check; Goldfeather draws the demo's picture; the pass counts are the formulas' (two surfaces of
-// four passes; Goldfeather n c select, n c (n - 1) parity, 8 parity bits per push to the far plane; layered k
-// select, k n parity, k the largest depth complexity of the product's target faces); the occlusion-query
-// early stop tries one empty layer more and changes nothing in the picture.
+// variants that show a failure (no stencil, a convexity bound too low, the eye inside a subtracted
+// primitive, a torus given to SCS) are caught by the same check; Goldfeather draws the demo's
+// picture; the pass counts are the formulas' (two surfaces of four passes; Goldfeather n c select,
+// n c (n - 1) parity, 8 parity bits per push to the far plane; layered k select, k n parity, k the
+// largest depth complexity of the product's target faces; SCS two passes per entry of a
+// subtraction sequence of n(n - 1) + 1); the occlusion-query early stop tries one empty layer more
+// and changes nothing in the picture.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -34,9 +36,10 @@ void expectRayCastAgrees(const LessonRun& r, const std::string& what) {
 }  // namespace
 
 TEST(Csg, EverySolidIsTheRayCast) {
-  for (const char* variant : {"a-minus-b", "union", "intersection", "b-minus-a", "goldfeather",
-                              "goldfeather-rounded-cube", "goldfeather-nested", "goldfeather-torus",
-                              "layered-torus", "layered-rounded-cube", "goldfeather-grid", "layered-grid"})
+  for (const char* variant :
+       {"a-minus-b", "union", "intersection", "b-minus-a", "goldfeather", "goldfeather-rounded-cube",
+        "goldfeather-nested", "goldfeather-torus", "layered-torus", "layered-rounded-cube",
+        "goldfeather-grid", "layered-grid", "scs-rounded-cube", "scs-grid"})
     for (const char* time : {"1", "4"}) {
       const auto r =
           run(variant, std::string("--variant ") + variant + " --set oracle=1 --time " + time, true);
@@ -49,9 +52,10 @@ TEST(Csg, TheRayCastCatchesTheFailures) {
   // Without the count A's front faces and B's back faces are all kept; with one layer per target
   // the torus' far side is never tried where its near side was cut away; with the eye inside the
   // subtracted B, B's front faces lie behind the near plane, so the count is off by one for every
-  // surface beyond B (A's front faces taken as inside B; B's back faces as outside it).
+  // surface beyond B (A's front faces taken as inside B; B's back faces as outside it); SCS given
+  // the torus takes its furthest front face for where the ray enters it.
   for (const char* variant :
-       {"no-stencil", "goldfeather-torus-convexity-1", "eye-in-b", "goldfeather-eye-in-b"}) {
+       {"no-stencil", "goldfeather-torus-convexity-1", "eye-in-b", "goldfeather-eye-in-b", "scs-torus"}) {
     const auto r = run(variant, std::string("--variant ") + variant + " --set oracle=1", true);
     if (!r) GTEST_SKIP() << "no GL context";
     EXPECT_GT(offEdges(*r), 500) << variant;
@@ -118,6 +122,19 @@ TEST(Csg, PassCountsAreTheFormulas) {
   r = run("layered-rounded", "--variant layered-rounded-cube", true);
   EXPECT_EQ(r->count("select_passes"), r->count("layers_counted"));
   EXPECT_EQ(r->count("parity_passes"), r->count("layers_counted") * 5);
+}
+
+TEST(Csg, ScsPassesAreTheSequence) {
+  // One product each: n subtracted primitives in a sequence of n(n - 1) + 1, two passes an entry
+  // (the front faces mark, the back faces move the surface), and the intersection's clip twice.
+  for (const auto& [variant, n] :
+       {std::pair<const char*, long long>{"scs-rounded-cube", 3}, {"scs-grid", 25}}) {
+    const auto r = run(variant, std::string("--variant ") + variant, true);
+    if (!r) GTEST_SKIP() << "no GL context";
+    EXPECT_EQ(r->count("sequence_length"), n * (n - 1) + 1) << variant;
+    EXPECT_EQ(r->count("subtraction_passes"), 2 * (n * (n - 1) + 1)) << variant;
+    EXPECT_EQ(r->count("clip_passes"), 2) << variant;
+  }
 }
 
 TEST(Csg, OcclusionQueriesStopAtTheFirstEmptyLayer) {
