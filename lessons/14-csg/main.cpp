@@ -34,6 +34,12 @@
 // Goldfeather selects the k-th fragment of all the product's target faces at once, k up to the
 // largest depth complexity of those faces (lesson 13's count): k(1 + n) passes. An occlusion
 // query that finds a layer empty stops either early.
+//
+// SCS (Stewart, Leach and John), for convex primitives only: the intersection is entered at the
+// furthest of the intersected front faces (if every intersected back face lies behind it), and a
+// subtracted primitive moves the surface to its back face where the surface lies inside it; the
+// subtracted primitives are applied in a sequence that holds every ordering of them, since they
+// may lie along a ray in any order (geometry/csg.h, subtractionSequence).
 
 #include <algorithm>
 #include <array>
@@ -102,7 +108,7 @@ LessonInfo lessonInfo() {
   info.summary =
       "Which faces of a solid lie inside another, counted in the stencil: union, intersection and\n"
       "differences of two convex solids; any expression as a sum of products by Goldfeather's parity bits,\n"
-      "with a convexity bound or the layered count.";
+      "with a convexity bound or the layered count, or by SCS's subtraction sequences.";
   info.options = {
       {"method", 'M',
        "0 two convex solids (the demo), 1 Goldfeather, 2 layered Goldfeather,\n"
@@ -113,6 +119,7 @@ LessonInfo lessonInfo() {
        "Goldfeather's scene: 0 the two solids (by op), 1 cube * sphere - three cylinders,\n"
        "      2 A - (B - C), 3 a torus (convexity 2) minus a box, 4 a box minus a 5x5 grid of spheres",
        0, 4},
+      {"grid", 'G', "scene 4: spheres along each side of the grid (the sweep's primitive count)", 5, 7, 1},
       {"convexity", 'C', "Goldfeather: the layers tried per target primitive (its convexity bound)", 1, 8, 1},
       {"queries", 'Q', "Goldfeather: stop at the first layer an occlusion query finds empty", 0},
       {"stencil", 'T', "trim by the stencil (off: every candidate surface kept, the result wrong)", 1},
@@ -214,7 +221,7 @@ CsgScene twoSolids(int op) {
   return s;
 }
 
-CsgScene goldfeatherScene(int scene, int op) {
+CsgScene goldfeatherScene(int scene, int op, int side) {
   using glm::rotate;
   using glm::translate;
   const glm::mat4 id(1.0f);
@@ -241,15 +248,17 @@ CsgScene goldfeatherScene(int scene, int op) {
           {"C", makeCube(0.3f), translate(id, {0.55f, 0.55f, 0.55f}), {0.3f, 0.8f, 0.35f}});
       s.expression = "A - (B - C)";
       return s;
-    case 4: {  // OpenCSG's benchmark: a box minus a 5x5 grid of spheres, 25 trimmers per target
+    case 4: {  // OpenCSG's benchmark: a box minus a grid of spheres (5x5: 25 trimmers per target)
       s.primitives.push_back(
           {"box", makeCube(1.0f), glm::scale(id, {1.3f, 0.4f, 1.3f}), {0.95f, 0.55f, 0.2f}});
       s.expression = "box";
       const Mesh sphere = makeSphere(0.3f, 24, 12);
-      for (int i = 0; i < 25; ++i) {
+      const auto place = [side](int j) {  // -1..1 across the box, the middle for one
+        return side == 1 ? 0.0f : -1.0f + 2.0f * static_cast<float>(j) / static_cast<float>(side - 1);
+      };
+      for (int i = 0; i < side * side; ++i) {
         const std::string name = "s" + std::to_string(i);
-        const glm::vec3 at(-1.0f + 0.5f * static_cast<float>(i % 5), 0.4f,
-                           -1.0f + 0.5f * static_cast<float>(i / 5));
+        const glm::vec3 at(place(i % side), 0.4f, place(i / side));
         s.primitives.push_back({name, sphere, translate(id, at), {0.25f, 0.5f, 0.95f}});
         s.expression += " - " + name;
       }
@@ -287,8 +296,9 @@ class Csg final : public Lesson {
 
   void render(Frame& f) override {
     const int method = f.option("method");
-    const CsgScene scene = method == kTwoSolids ? twoSolids(f.option("op"))
-                                                : goldfeatherScene(f.option("scene"), f.option("op"));
+    const CsgScene scene = method == kTwoSolids
+                               ? twoSolids(f.option("op"))
+                               : goldfeatherScene(f.option("scene"), f.option("op"), f.option("grid"));
     prepare(scene);
     models_.clear();
     const glm::mat4 spin = glm::rotate(
@@ -457,6 +467,7 @@ class Csg final : public Lesson {
   // intersection clips again; the surface is merged into the frame as Goldfeather's is.
   void scs(Frame& f, const SumOfProducts& sop) {
     f.count("products", sop.products.size());
+    f.count("literals", sop.literals());
     for (const char* name : {"sequence_length", "subtraction_passes", "clip_passes", "merge_passes"})
       f.count(name, 0);
     GLint frameBinding = 0;
