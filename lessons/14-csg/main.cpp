@@ -117,8 +117,9 @@ LessonInfo lessonInfo() {
       {"op", 'O', "two solids: 0 A + B, 1 A * B, 2 A - B, 3 B - A", kAMinusB, 3},
       {"scene", 'N',
        "Goldfeather's scene: 0 the two solids (by op), 1 cube * sphere - three cylinders,\n"
-       "      2 A - (B - C), 3 a torus (convexity 2) minus a box, 4 a box minus a 5x5 grid of spheres",
-       0, 4},
+       "      2 A - (B - C), 3 a torus (convexity 2) minus a box, 4 a box minus a grid of spheres,\n"
+       "      5 a pocket whose top lies in A's top face (coincident faces), 6 the same, B 0.01 taller",
+       0, 6},
       {"grid", 'G', "scene 4: spheres along each side of the grid (the sweep's primitive count)", 5, 7, 1},
       {"convexity", 'C', "Goldfeather: the layers tried per target primitive (its convexity bound)", 1, 8, 1},
       {"queries", 'Q', "Goldfeather: stop at the first layer an occlusion query finds empty", 0},
@@ -180,6 +181,12 @@ LessonInfo lessonInfo() {
        {{"method", kScs}, {"scene", 3}},
        {},
        throughTheCut()},
+      {"coincident",
+       "A - B where B's top face lies in A's: z-fighting decides pixel by pixel",
+       {{"method", kGoldfeather}, {"scene", 5}}},
+      {"coincident-grown",
+       "the same with B 0.01 taller: a clean pocket",
+       {{"method", kGoldfeather}, {"scene", 6}}},
       {"goldfeather-grid",
        "a box minus 25 spheres: 25 trimming primitives, more than the 8 stencil bits, flushed every 8",
        {{"method", kGoldfeather}, {"scene", 4}}},
@@ -262,6 +269,18 @@ CsgScene goldfeatherScene(int scene, int op, int side) {
         s.primitives.push_back({name, sphere, translate(id, at), {0.25f, 0.5f, 0.95f}});
         s.expression += " - " + name;
       }
+      return s;
+    }
+    case 5:
+    case 6: {  // a pocket whose floor is B's and whose top lies in A's top face (5), or 0.01 above it (6)
+      const float grow = scene == 6 ? 0.01f : 0.0f;
+      s.primitives.push_back({"A", makeCube(0.8f), id, {0.95f, 0.55f, 0.2f}});
+      s.primitives.push_back(
+          {"B",
+           makeCube(1.0f),
+           glm::scale(translate(id, {0.3f, 0.5f + 0.5f * grow, 0.3f}), {0.35f, 0.3f + 0.5f * grow, 0.35f}),
+           {0.25f, 0.5f, 0.95f}});
+      s.expression = "A - B";
       return s;
     }
     default:  // a ring cut through on its near side: the far side shows through the cut
