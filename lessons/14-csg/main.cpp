@@ -118,8 +118,9 @@ LessonInfo lessonInfo() {
       {"scene", 'N',
        "Goldfeather's scene: 0 the two solids (by op), 1 cube * sphere - three cylinders,\n"
        "      2 A - (B - C), 3 a torus (convexity 2) minus a box, 4 a box minus a grid of spheres,\n"
-       "      5 a pocket whose top lies in A's top face (coincident faces), 6 the same, B 0.01 taller",
-       0, 6},
+       "      5 a pocket whose top lies in A's top face (coincident faces), 6 the same, B 0.01 taller,\n"
+       "      7 the cube rack: a box minus 343 boxes",
+       0, 7},
       {"grid", 'G', "scene 4: spheres along each side of the grid (the sweep's primitive count)", 5, 7, 1},
       {"convexity", 'C', "Goldfeather: the layers tried per target primitive (its convexity bound)", 1, 8, 1},
       {"queries", 'Q', "Goldfeather: stop at the first layer an occlusion query finds empty", 0},
@@ -187,6 +188,9 @@ LessonInfo lessonInfo() {
       {"coincident-grown",
        "the same with B 0.01 taller: a clean pocket",
        {{"method", kGoldfeather}, {"scene", 6}}},
+      {"layered-rack",
+       "layered Goldfeather on the cube rack: 344 primitives, ids past 255 recorded modulo 255",
+       {{"method", kLayered}, {"scene", 7}}},
       {"goldfeather-grid",
        "a box minus 25 spheres: 25 trimming primitives, more than the 8 stencil bits, flushed every 8",
        {{"method", kGoldfeather}, {"scene", 4}}},
@@ -281,6 +285,21 @@ CsgScene goldfeatherScene(int scene, int op, int side) {
            glm::scale(translate(id, {0.3f, 0.5f + 0.5f * grow, 0.3f}), {0.35f, 0.3f + 0.5f * grow, 0.35f}),
            {0.25f, 0.5f, 0.95f}});
       s.expression = "A - B";
+      return s;
+    }
+    case 7: {  // OpenCSG's cube rack: a box minus 7x7x7 small boxes, the outer ones cutting its faces
+      s.primitives.push_back({"box", makeCube(0.9f), id, {0.95f, 0.55f, 0.2f}});
+      s.expression = "box";
+      const Mesh cube = makeCube(0.1f);
+      const auto place = [](int j) { return -1.0f + (2.0f * static_cast<float>(j) + 1.0f) / 7.0f; };
+      for (int i = 0; i < 343; ++i) {
+        const std::string name = "c" + std::to_string(i);
+        s.primitives.push_back({name,
+                                cube,
+                                translate(id, {place(i % 7), place(i / 7 % 7), place(i / 49)}),
+                                {0.25f, 0.5f, 0.95f}});
+        s.expression += " - " + name;
+      }
       return s;
     }
     default:  // a ring cut through on its near side: the far side shows through the cut
@@ -552,7 +571,7 @@ class Csg final : public Lesson {
       std::vector<int> targets = p.intersected;
       targets.insert(targets.end(), p.subtracted.begin(), p.subtracted.end());
       for (int x : targets) {
-        glStencilFunc(GL_ALWAYS, std::min(x + 1, 255), 0xFF);
+        glStencilFunc(GL_ALWAYS, x % 255 + 1, 0xFF);  // the primitive, modulo 255, for the oracle
         drawTargets(p, {x}, true);
       }
       glBindTexture(GL_TEXTURE_2D, 0);
@@ -680,7 +699,7 @@ class Csg final : public Lesson {
 
     // 3. Merge: the targets drawn into the frame where they are the trimmed surface (the shader
     // compares with the work depth), the nearest of all products winning; the stencil records
-    // the primitive (its index + 1).
+    // the primitive (its index modulo 255, + 1).
     glBindFramebuffer(GL_FRAMEBUFFER, frame);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthFunc(GL_LESS);
@@ -690,7 +709,7 @@ class Csg final : public Lesson {
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, workDepth_);
     for (int x : targets) {
-      glStencilFunc(GL_ALWAYS, std::min(x + 1, 255), 0xFF);
+      glStencilFunc(GL_ALWAYS, x % 255 + 1, 0xFF);  // the primitive, modulo 255, for the oracle
       drawTargets(p, {x}, true);
     }
     glBindTexture(GL_TEXTURE_2D, 0);
@@ -829,7 +848,12 @@ class Csg final : public Lesson {
     std::vector<CsgPrimitive> primitives;
     for (std::size_t i = 0; i < scene.primitives.size(); ++i)
       primitives.push_back({&scene.primitives[i].mesh, models_[i]});
-    const CsgImage expected = rayCastCsg(primitives, tree, f.projection * f.view, f.size);
+    CsgImage expected = rayCastCsg(primitives, tree, f.projection * f.view, f.size);
+    // 8 stencil bits record the primitive modulo 255 (0 is none): past 254 primitives the ray
+    // cast's are compared modulo 255 too.
+    if (method != kTwoSolids)
+      for (int& e : expected.primitive)
+        if (e >= 0) e %= 255;
     const std::size_t w = static_cast<std::size_t>(f.size.x), h = static_cast<std::size_t>(f.size.y);
     std::vector<float> depthRows(w * h);
     std::vector<std::uint8_t> stencilRows(w * h);

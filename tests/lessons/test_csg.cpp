@@ -75,6 +75,17 @@ TEST(Csg, CoincidentFacesFightUnlessGrown) {
   }
 }
 
+TEST(Csg, TheCubeRacksPrimitivesPast255) {
+  // A box minus 343 boxes: 344 primitives, 343 trimmers in 43 turns of 8 bits per layer, and the
+  // stencil's record of the primitive modulo 255 (a saturating record showed 2,681 pixels wrong).
+  const auto r = run("rack", "--variant layered-rack --set oracle=1", true);
+  if (!r) GTEST_SKIP() << "no GL context";
+  expectRayCastAgrees(*r, "the cube rack");
+  EXPECT_EQ(r->count("literals"), 344);
+  EXPECT_EQ(r->count("parity_passes"), r->count("layers_counted") * 344);
+  EXPECT_EQ(r->count("far_passes"), r->count("layers_counted") * 43);
+}
+
 TEST(Csg, GoldfeatherDrawsTheDemosPicture) {
   const auto demo = run("demo", "--variant a-minus-b");
   if (!demo) GTEST_SKIP() << "no GL context";
