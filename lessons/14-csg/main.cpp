@@ -116,7 +116,7 @@ LessonInfo lessonInfo() {
        kTwoSolids, 3},
       {"op", 'O', "two solids: 0 A + B, 1 A * B, 2 A - B, 3 B - A", kAMinusB, 3},
       {"scene", 'N',
-       "Goldfeather's scene: 0 the two solids (by op), 1 cube * sphere - three cylinders,\n"
+       "the scene of methods 1 to 3: 0 the two solids (by op), 1 cube * sphere - three cylinders,\n"
        "      2 A - (B - C), 3 a torus (convexity 2) minus a box, 4 a box minus a grid of spheres,\n"
        "      5 a pocket whose top lies in A's top face (coincident faces), 6 the same, B 0.01 taller,\n"
        "      7 the cube rack: a box minus 343 boxes",
