@@ -49,7 +49,9 @@
 #include <vector>
 
 #include "geometry/csg.h"
+#include "geometry/scene.h"
 #include "geometry/shapes.h"
+#include "gl/errors.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
 #include "gl/shader.h"
@@ -317,15 +319,31 @@ CsgScene goldfeatherScene(int scene, int op, int side) {
   }
 }
 
+// A scene file's csg line (docs/scenes.md) over its objects, at their models at `time`; the
+// file's own motion (spin, bob) turns them, so the lesson adds none.
+CsgScene fileScene(const Scene& file, double time) {
+  CsgScene s;
+  for (const SceneObject& o : file.objects)
+    s.primitives.push_back({o.name, o.mesh, o.modelAt(time), o.color});
+  s.expression = file.csg;
+  s.spinDegPerSecond = 0.0f;
+  return s;
+}
+
 class Csg final : public Lesson {
  public:
-  Csg()
-      : light_("common/light.vert", "common/light.frag"),
+  explicit Csg(const Scene* fromFile)
+      : fromFile_(fromFile),
+        light_("common/light.vert", "common/light.frag"),
         depthOnly_("common/light.vert", "common/flat.frag"),
         merge_("common/light.vert", "14-csg/merge.frag"),
         flat_("common/flat.vert", "common/flat.frag"),
         quadMesh_(makeScreenQuad()),
-        quad_(quadMesh_) {}
+        quad_(quadMesh_) {
+    if (fromFile_ && fromFile_->csg.empty())
+      throw UsageError(fromFile_->file.string() +
+                       ": the scene has no csg line; lesson 14 renders a CSG expression over the objects");
+  }
 
   ~Csg() override {
     if (work_) glDeleteFramebuffers(1, &work_);
@@ -334,7 +352,12 @@ class Csg final : public Lesson {
 
   void render(Frame& f) override {
     const int method = f.option("method");
-    const CsgScene scene = method == kTwoSolids
+    if (fromFile_ && method == kTwoSolids)
+      throw UsageError(
+          "--scene: method 0 draws the demo's two solids; the scene's csg expression needs "
+          "--set method=1, 2 or 3");
+    const CsgScene scene = fromFile_ ? fileScene(*fromFile_, f.time)
+                           : method == kTwoSolids
                                ? twoSolids(f.option("op"))
                                : goldfeatherScene(f.option("scene"), f.option("op"), f.option("grid"));
     prepare(scene);
@@ -882,6 +905,7 @@ class Csg final : public Lesson {
     f.count("oracle_largest_depth_error_1e9", static_cast<std::uint64_t>(r.largestDepthError * 1e9f));
   }
 
+  const Scene* fromFile_;  // --scene's file, or nullptr for the lesson's own scenes
   Program light_, depthOnly_, merge_, flat_;
   Mesh quadMesh_;
   GpuMesh quad_;
@@ -896,6 +920,6 @@ class Csg final : public Lesson {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return runLesson(
-      lessonInfo(), [] { return std::make_unique<Csg>(); }, argc, argv);
+  return runSceneLesson(
+      lessonInfo(), [](const Scene* fromFile) { return std::make_unique<Csg>(fromFile); }, argc, argv);
 }
