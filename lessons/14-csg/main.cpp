@@ -121,8 +121,8 @@ LessonInfo lessonInfo() {
        "the scene of methods 1 to 3: 0 the two solids (by op), 1 cube * sphere - three cylinders,\n"
        "      2 A - (B - C), 3 a torus (convexity 2) minus a box, 4 a box minus a grid of spheres,\n"
        "      5 a pocket whose top lies in A's top face (coincident faces), 6 the same, B 0.01 taller,\n"
-       "      7 the cube rack: a box minus 343 boxes",
-       0, 7},
+       "      7 the cube rack: a box minus 343 boxes, 8 a box minus a 3x3x3 grid of spheres",
+       0, 8},
       {"grid", 'G', "scene 4: spheres along each side of the grid (the sweep's primitive count)", 5, 7, 1},
       {"convexity", 'C', "Goldfeather: the layers tried per target primitive (its convexity bound)", 1, 8, 1},
       {"queries", 'Q', "Goldfeather: stop at the first layer an occlusion query finds empty", 0},
@@ -300,6 +300,19 @@ CsgScene goldfeatherScene(int scene, int op, int side) {
                                 cube,
                                 translate(id, {place(i % 7), place(i / 7 % 7), place(i / 49)}),
                                 {0.25f, 0.5f, 0.95f}});
+        s.expression += " - " + name;
+      }
+      return s;
+    }
+    case 8: {  // OpenCSG's 3x3x3 grid: a box minus 27 spheres, the outer ones cutting its faces
+      s.primitives.push_back({"box", makeCube(0.9f), id, {0.95f, 0.55f, 0.2f}});
+      s.expression = "box";
+      const Mesh sphere = makeSphere(0.32f, 24, 12);
+      for (int i = 0; i < 27; ++i) {
+        const std::string name = "s" + std::to_string(i);
+        const glm::vec3 at(0.9f * static_cast<float>(i % 3 - 1), 0.9f * static_cast<float>(i / 3 % 3 - 1),
+                           0.9f * static_cast<float>(i / 9 - 1));
+        s.primitives.push_back({name, sphere, translate(id, at), {0.25f, 0.5f, 0.95f}});
         s.expression += " - " + name;
       }
       return s;
