@@ -51,6 +51,13 @@ class LessonStats {
     return static_cast<long long>(passSum(pass, field));
   }
 
+  // How many passes ran under this name (a pass repeated per light or product counts each time).
+  long long passCount(const std::string& pass) const {
+    long long n = 0;
+    for (const auto& p : json_.at("passes")) n += p.at("name") == pass;
+    return n;
+  }
+
   // The first pass named `pass`: one of its fields.
   long long firstPass(const std::string& pass, const std::string& field) const {
     for (const auto& p : json_.at("passes"))

@@ -8,6 +8,7 @@
 #include <charconv>
 #include <climits>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -16,6 +17,7 @@
 #include <set>
 #include <sstream>
 
+#include "geometry/csg.h"
 #include "geometry/shadow_volume.h"
 #include "geometry/shapes.h"
 #include "geometry/solid.h"
@@ -786,6 +788,51 @@ void readObjectLine(LineReader& line, SceneObject& object) {
 
 }  // namespace
 
+namespace {
+
+// The csg line against the objects read: its names, its syntax, its sum of products' size, and
+// the solids it names closed (lesson 14's counting and its ray cast need an inside).
+void checkCsg(Scene& scene, const std::string& file, std::size_t column) {
+  const std::string where = file + ":" + std::to_string(scene.csgLine) + ": ";
+  std::vector<std::string> names;
+  for (const SceneObject& o : scene.objects) names.push_back(o.name);
+  CsgTree tree;
+  try {
+    tree = parseCsg(scene.csg, names);
+  } catch (const std::invalid_argument& e) {
+    // "column N: ..." counts in the expression; the user counts in the line.
+    std::string message = e.what();
+    std::size_t n = 0;
+    if (std::sscanf(message.c_str(), "column %zu", &n) == 1) {
+      const std::size_t colon = message.find(':');
+      message = "column " + std::to_string(n + column) + message.substr(colon);
+    }
+    throw SceneError(where + "csg: " + message);
+  }
+  try {
+    normalize(tree, kMaxSceneCsgProducts);
+  } catch (const std::length_error& e) {
+    throw SceneError(where + "csg: " + e.what() + "; a scene's expression may have at most " +
+                     std::to_string(kMaxSceneCsgProducts) + " (factor it, or subtract a union)");
+  }
+  std::vector<bool> named(scene.objects.size(), false);
+  for (const CsgTree::Node& n : tree.nodes)
+    if (n.kind == CsgTree::Kind::Primitive) named[static_cast<std::size_t>(n.primitive)] = true;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    if (!named[i]) continue;
+    const SceneObject& o = scene.objects[i];
+    CasterReport report = o.casts ? o.caster.report : prepareCaster(o.mesh).report;
+    if (!report.closed())
+      throw SceneError(where + "csg: object '" + o.name + "' is not a closed solid (" +
+                       std::to_string(report.borderEdges) + " border edges, " +
+                       std::to_string(report.nonManifoldEdges) + " non-manifold, " +
+                       std::to_string(report.inconsistentEdges) +
+                       " inconsistently wound): CSG needs each primitive's inside");
+  }
+}
+
+}  // namespace
+
 Scene parseScene(std::string_view text, const std::filesystem::path& file, const ObjFileReader& readObj) {
   Scene scene;
   scene.file = file;
@@ -794,6 +841,7 @@ Scene parseScene(std::string_view text, const std::filesystem::path& file, const
   bool inObject = false;           // the last unindented line was an object: indented lines are its settings
   std::vector<Mesh> casterInputs;  // per object: an OBJ file's shared positions, else empty
   std::size_t triangles = 0;
+  std::size_t csgColumn = 0;  // where the csg expression starts in its line, 0-based
   std::istringstream in{std::string(text)};
   int lineNumber = 0;
   std::string raw;
@@ -850,9 +898,17 @@ Scene parseScene(std::string_view text, const std::filesystem::path& file, const
       scene.objects.push_back(std::move(object));
       casterInputs.push_back(std::move(meshes.shared));
       inObject = true;
+    } else if (keyword == "csg") {
+      if (scene.csgLine != 0) line.fail("a second csg line; a scene has one CSG expression");
+      // The expression is the rest of the line, spaces and all: its columns are the line's.
+      csgColumn = content.find("csg") + 3;
+      scene.csg = content.substr(csgColumn);
+      scene.csgLine = lineNumber;
+      if (scene.csg.find_first_not_of(" \t\r") == std::string::npos)
+        line.fail("expected a CSG expression after csg");
     } else {
       line.fail("unknown keyword " + quote(keyword) +
-                "; expected camera, ambient, light or object (settings of an object are indented)");
+                "; expected camera, ambient, light, object or csg (settings of an object are indented)");
     }
   }
   // Casters are prepared once their settings are read: 'casts no' spares a mesh that cannot cast.
@@ -874,6 +930,7 @@ Scene parseScene(std::string_view text, const std::filesystem::path& file, const
                        " (repair the mesh, or give it 'casts no')");
     }
   }
+  if (scene.csgLine != 0) checkCsg(scene, name, csgColumn);
   const std::string end = name + ":" + std::to_string(std::max(lineNumber, 1)) + ": ";
   if (!haveCamera) throw SceneError(end + "the scene has no camera line");
   if (scene.lights.empty()) throw SceneError(end + "the scene has no light");

@@ -38,8 +38,9 @@ inline constexpr std::size_t kMaxSceneObjects = 256;
 inline constexpr std::size_t kMaxSceneTriangles = 1'000'000;  // all objects together
 inline constexpr std::uintmax_t kMaxSceneFileBytes = 1u << 20;
 inline constexpr std::uintmax_t kMaxObjFileBytes = 64u << 20;
-inline constexpr std::size_t kMaxObjFaceCorners = 256;  // corners of one OBJ face
-inline constexpr float kMaxObjCoordinate = 1e6f;        // |x|, |y|, |z| of an OBJ vertex
+inline constexpr std::size_t kMaxObjFaceCorners = 256;     // corners of one OBJ face
+inline constexpr float kMaxObjCoordinate = 1e6f;           // |x|, |y|, |z| of an OBJ vertex
+inline constexpr std::size_t kMaxSceneCsgProducts = 4096;  // the csg expression's sum of products
 
 // What preparing a caster found and did. Open meshes are kept: their border edges extrude as
 // silhouette edges (shadow_volume.h), and their faces cap the volume from both sides.
@@ -114,6 +115,11 @@ struct SceneCamera {
 
 struct Scene {
   std::filesystem::path file;  // where it came from; empty when built in code
+  // A CSG expression over the objects (the `csg` line; geometry/csg.h's text form, the objects'
+  // names its primitives): lesson 14 renders it. Empty when the file has none. Every object it
+  // names is closed (checked when the scene is read).
+  std::string csg;
+  int csgLine = 0;  // its line in the scene file
   SceneCamera camera;
   glm::vec3 ambient{0.1f};
   std::vector<SceneLight> lights;
@@ -169,7 +175,10 @@ using ObjFileReader = std::function<std::string(const std::filesystem::path&)>;
 // the scene file. Throws SceneError ("FILE:LINE: what is wrong", or "FILE: what is wrong" when
 // the file cannot be read, is not a regular file or is over kMaxSceneFileBytes) for anything it
 // cannot use; a caster whose mesh is not usable for shadow volumes is an error that names the
-// edges' problem. Returns the scene, every caster prepared.
+// edges' problem. A csg line is checked against the objects: an unknown name or a syntax error
+// (with its column in the line), a sum of products past kMaxSceneCsgProducts, or an object it
+// names that is not a closed solid is an error at that line. Returns the scene, every caster
+// prepared.
 Scene loadScene(const std::filesystem::path& file);
 // The same for a scene's text; `file` names it in messages and locates its OBJ files, which
 // `readObj` reads.

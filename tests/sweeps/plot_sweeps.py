@@ -4,7 +4,7 @@
     plot_sweeps.py SWEEP IN.csv OUT.svg
 
 SWEEP names the sweep (its lesson): 03-recursive-mirrors, 05-light-blocking,
-09-cutout-extrusion, 10-soft-shadows or 16-fast-robust-shadows; IN.csv is what tests/sweeps/<sweep>_sweep
+09-cutout-extrusion, 10-soft-shadows, 14-csg or 16-fast-robust-shadows; IN.csv is what tests/sweeps/<sweep>_sweep
 wrote; OUT.svg is replaced only once the plot is drawn. A missing or malformed CSV, an unknown
 sweep or a bad command line gets one line on stderr and exit 2.
 
@@ -376,7 +376,8 @@ def plot_soft_shadows(path):
     return fig
 
 
-# Lesson 14: time per frame against the primitives of the box-minus-spheres grid, per algorithm.
+# Lesson 14: time and passes per frame against primitives, per algorithm, on OpenCSG's scenes: a box
+# minus a k x k grid of spheres (lines), the 3x3x3 grid (squares) and the cube rack (stars).
 def plot_csg(path):
     rows = read_rows(path, ["primitives", "frame_ms", "passes"], text=["scene", "method"])
     methods = []
@@ -384,19 +385,26 @@ def plot_csg(path):
         if r["method"] not in methods:
             methods.append(r["method"])
     plt = pyplot()
-    fig, (ms, passes) = plt.subplots(1, 2, figsize=(10, 4), layout="constrained")
+    fig, (ms, passes) = plt.subplots(1, 2, figsize=(11, 4.2), layout="constrained")
     for i, method in enumerate(methods):
-        s = sorted(select(rows, path, "method", method=method), key=lambda r: r["primitives"])
-        style = dict(color=f"C{i // 2}", linestyle="--" if "queries" in method else "-", marker="o", markersize=3.5)
-        ms.plot([r["primitives"] for r in s], [r["frame_ms"] for r in s], label=method, **style)
-        passes.plot([r["primitives"] for r in s], [r["passes"] for r in s], label=method, **style)
+        colour = f"C{i}"
+        for ax, field in ((ms, "frame_ms"), (passes, "passes")):
+            grid = sorted((r for r in rows if r["method"] == method and r["scene"] == "grid"),
+                          key=lambda r: r["primitives"])
+            if grid:
+                ax.plot([r["primitives"] for r in grid], [r[field] for r in grid], "o-", color=colour,
+                        markersize=3.5, label=method if ax is passes else None)
+            for scene, marker in (("grid3", "s"), ("rack", "*")):
+                for r in rows:
+                    if r["method"] == method and r["scene"] == scene:
+                        ax.plot([r["primitives"]], [r[field]], marker, color=colour, markersize=8)
     for ax, what in ((ms, "time per frame (ms, 320x240, llvmpipe)"), (passes, "passes per frame")):
         ax.set_xscale("log")
         ax.set_yscale("log")
         plain_log(ax.xaxis)
         plain_log(ax.yaxis)
         ax.grid(True, which="major", alpha=0.3)
-        ax.set_xlabel("primitives (a box minus a k x k grid of spheres)")
+        ax.set_xlabel("primitives (box minus k x k spheres: lines; 3x3x3: squares; cube rack: stars)")
         ax.set_ylabel(what)
     ms.set_title("Time")
     passes.set_title("Passes")
@@ -409,6 +417,7 @@ SWEEPS = {
     "05-light-blocking": plot_light_blocking,
     "09-cutout-extrusion": plot_cutout_extrusion,
     "10-soft-shadows": plot_soft_shadows,
+    "14-csg": plot_csg,
     "16-fast-robust-shadows": plot_fast_shadows,
 }
 

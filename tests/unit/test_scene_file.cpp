@@ -202,7 +202,7 @@ TEST(SceneFile, EveryMistakeIsOneLineWithFileLineAndWhatWasExpected) {
   const struct {
     std::string text, message;
   } cases[] = {
-      {h + "lamp 1 2 3\n", "test.scene:3: unknown keyword 'lamp'; expected camera, ambient, light or object"},
+      {h + "lamp 1 2 3\n", "test.scene:3: unknown keyword 'lamp'; expected camera, ambient, light, object or csg"},
       {"  translate 1 2 3\n" + h,
        "test.scene:1: an indented line is an object's setting, and no object line"},
       {h + "object a box\nlight point 1 2 3\n  translate 1 2 3\n",
@@ -292,7 +292,7 @@ TEST(SceneFile, EveryMistakeIsOneLineWithFileLineAndWhatWasExpected) {
 TEST(SceneFile, MessagesArePrintable) {
   EXPECT_EQ(
       errorOf(std::string(header) + "l\x1b[2Jamp\x01\xff 1\n"),
-      "test.scene:3: unknown keyword 'l\\x1b[2Jamp\\x01\\xff'; expected camera, ambient, light or object "
+      "test.scene:3: unknown keyword 'l\\x1b[2Jamp\\x01\\xff'; expected camera, ambient, light, object or csg "
       "(settings of an object are indented)");
   EXPECT_EQ(errorOf(std::string(header) + std::string(100, 'x') + "\n")
                 .rfind("test.scene:3: unknown keyword '" + std::string(40, 'x') + "...';", 0),
@@ -301,7 +301,7 @@ TEST(SceneFile, MessagesArePrintable) {
             "test.scene:3: expected the object's name in printable ASCII, got 'caf\\xc3\\xa9'");
   EXPECT_EQ(errorOf(std::string("\0\0\0\n", 4), "x\n.scene"),
             "x\\x0a.scene:1: unknown keyword '\\x00\\x00\\x00'; "
-            "expected camera, ambient, light or object (settings of an object are indented)");
+            "expected camera, ambient, light, object or csg (settings of an object are indented)");
 }
 
 // Limits keep a scene a lesson's size: lights, objects, triangles (docs/scenes.md).

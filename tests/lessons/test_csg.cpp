@@ -1,0 +1,201 @@
+// Lesson 14's claims, measured on its output: every variant that claims a solid shows, pixel for
+// pixel, the depth and the primitive the CPU CSG ray cast finds (edges aside), at two times; the
+// variants that show a failure (no stencil, a convexity bound too low, the eye inside a subtracted
+// primitive, a torus given to SCS, faces that coincide) are caught by the same check; Goldfeather draws the
+// demo's picture; the pass counts are the formulas' (two surfaces of four passes; Goldfeather n c select, n c
+// (n - 1) parity, 8 parity bits per push to the far plane; layered k select, k n parity, k the largest depth
+// complexity of the product's target faces; SCS two passes per entry of a subtraction sequence of n(n - 1) +
+// 1); the occlusion-query early stop tries one empty layer more and changes nothing in the picture.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "lesson_run.h"
+
+using namespace stencil;
+using stencil::testing::LessonRun;
+
+namespace {
+
+std::optional<LessonRun> run(const std::string& name, const std::string& args, bool stats = false) {
+  return stencil::testing::runLesson(LESSON_14, name, args, stats);
+}
+
+long long offEdges(const LessonRun& r) {
+  return r.count("oracle_primitive_disagreements") + r.count("oracle_depth_disagreements") -
+         r.count("oracle_on_edges");
+}
+
+void expectRayCastAgrees(const LessonRun& r, const std::string& what) {
+  ASSERT_GT(r.count("oracle_pixels"), 0) << what;
+  EXPECT_EQ(offEdges(r), 0) << what;
+  EXPECT_LT(r.count("oracle_on_edges"), r.count("oracle_pixels") / 100) << what;
+}
+
+}  // namespace
+
+TEST(Csg, EverySolidIsTheRayCast) {
+  for (const char* variant :
+       {"a-minus-b", "union", "intersection", "b-minus-a", "goldfeather", "goldfeather-rounded-cube",
+        "goldfeather-nested", "goldfeather-torus", "layered-torus", "layered-rounded-cube",
+        "goldfeather-grid", "layered-grid", "scs-rounded-cube", "scs-grid", "coincident-grown"})
+    for (const char* time : {"1", "4"}) {
+      const auto r =
+          run(variant, std::string("--variant ") + variant + " --set oracle=1 --time " + time, true);
+      if (!r) GTEST_SKIP() << "no GL context";
+      expectRayCastAgrees(*r, std::string(variant) + " at t = " + time);
+    }
+}
+
+TEST(Csg, TheRayCastCatchesTheFailures) {
+  // Without the count A's front faces and B's back faces are all kept; with one layer per target
+  // the torus' far side is never tried where its near side was cut away; with the eye inside the
+  // subtracted B, B's front faces lie behind the near plane, so the count is off by one for every
+  // surface beyond B (A's front faces taken as inside B; B's back faces as outside it); SCS given
+  // the torus takes its furthest front face for where the ray enters it.
+  for (const char* variant :
+       {"no-stencil", "goldfeather-torus-convexity-1", "eye-in-b", "goldfeather-eye-in-b", "scs-torus"}) {
+    const auto r = run(variant, std::string("--variant ") + variant + " --set oracle=1", true);
+    if (!r) GTEST_SKIP() << "no GL context";
+    EXPECT_GT(offEdges(*r), 500) << variant;
+  }
+}
+
+TEST(Csg, CoincidentFacesFightUnlessGrown) {
+  // B's top face in A's top face: the two are rasterized from different triangles, and which is
+  // nearer is rounding's choice, pixel by pixel, for every method; B grown 0.01 above A agrees.
+  for (const char* method : {"1", "2", "3"}) {
+    const auto r =
+        run("coincident", std::string("--variant coincident --set oracle=1 --set method=") + method, true);
+    if (!r) GTEST_SKIP() << "no GL context";
+    EXPECT_GT(offEdges(*r), 10) << "method " << method;
+    const auto grown =
+        run("grown", std::string("--variant coincident-grown --set oracle=1 --set method=") + method, true);
+    expectRayCastAgrees(*grown, std::string("grown, method ") + method);
+  }
+}
+
+TEST(Csg, TheCubeRacksPrimitivesPast255) {
+  // A box minus 343 boxes: 344 primitives, 343 trimmers in 43 turns of 8 bits per layer, and the
+  // stencil's record of the primitive modulo 255 (a saturating record showed 2,681 pixels wrong).
+  const auto r = run("rack", "--variant layered-rack --set oracle=1", true);
+  if (!r) GTEST_SKIP() << "no GL context";
+  expectRayCastAgrees(*r, "the cube rack");
+  EXPECT_EQ(r->count("literals"), 344);
+  EXPECT_EQ(r->count("parity_passes"), r->count("layers_counted") * 344);
+  EXPECT_EQ(r->count("far_passes"), r->count("layers_counted") * 43);
+}
+
+TEST(Csg, GoldfeatherDrawsTheDemosPicture) {
+  const auto demo = run("demo", "--variant a-minus-b");
+  if (!demo) GTEST_SKIP() << "no GL context";
+  const auto goldfeather = run("goldfeather", "--variant goldfeather");
+  std::size_t differ = 0, covered = 0;
+  for (std::size_t i = 0; i < demo->stencil.pixels.size(); ++i) {
+    differ += stencil::testing::differs(demo->colour, goldfeather->colour, i, 8);
+    covered += demo->stencil.pixels[i] != 0;
+  }
+  EXPECT_GT(covered, 5000u);
+  EXPECT_LT(differ, covered / 100);
+}
+
+TEST(Csg, PassCountsAreTheFormulas) {
+  // Two solids: per surface one pass each to draw it, count the other, keep it, push the rest far.
+  auto r = run("two", "--variant a-minus-b", true);
+  if (!r) GTEST_SKIP() << "no GL context";
+  const auto passes = [](const LessonRun& run, const std::string& name) { return run.stats.passCount(name); };
+  for (const char* pass : {"surface", "count", "keep", "far"}) EXPECT_EQ(passes(*r, pass), 2) << pass;
+  // Goldfeather, one product of n = 5 (cube * sphere - (x + y + z)), c layers per target.
+  for (int c : {1, 2, 3}) {
+    r = run("rounded", "--variant goldfeather-rounded-cube --set convexity=" + std::to_string(c), true);
+    const long long n = 5;
+    EXPECT_EQ(r->count("products"), 1);
+    EXPECT_EQ(r->count("literals"), n);
+    EXPECT_EQ(r->count("select_passes"), n * c) << c;
+    EXPECT_EQ(r->count("parity_passes"), n * c * (n - 1)) << c;
+    EXPECT_EQ(r->count("far_passes"), n * c) << c;  // n - 1 = 4 bits: one flush per layer
+    EXPECT_EQ(r->count("merge_passes"), n * c) << c;
+  }
+  // A - (B - C) = A - B + A * C: two products of two.
+  r = run("nested", "--variant goldfeather-nested", true);
+  EXPECT_EQ(r->count("products"), 2);
+  EXPECT_EQ(r->count("select_passes"), 2 * 2);
+  EXPECT_EQ(r->count("parity_passes"), 2 * 2 * 1);
+  // Layered: k layers, each trimmed by all n primitives; k is the largest count of the target
+  // faces (the torus' two front faces and the box's back face along the rays through the cut).
+  r = run("layered", "--variant layered-torus", true);
+  const long long k = r->count("layers_counted");
+  EXPECT_EQ(k, 3);
+  EXPECT_EQ(r->count("select_passes"), k);
+  EXPECT_EQ(r->count("parity_passes"), k * 2);
+  // More trimming primitives than stencil bits: the box minus 25 spheres, n = 26. Each target's 25
+  // trimmers take 8 bits at a time, ceil(25 / 8) = 4 pushes to the far plane per layer; layered,
+  // ceil(26 / 8) = 4 per layer.
+  r = run("grid", "--variant goldfeather-grid", true);
+  EXPECT_EQ(r->count("parity_passes"), 26 * 25);
+  EXPECT_EQ(r->count("far_passes"), 26 * 4);
+  r = run("layered-grid", "--variant layered-grid", true);
+  EXPECT_EQ(r->count("parity_passes"), r->count("layers_counted") * 26);
+  EXPECT_EQ(r->count("far_passes"), r->count("layers_counted") * 4);
+  r = run("layered-rounded", "--variant layered-rounded-cube", true);
+  EXPECT_EQ(r->count("select_passes"), r->count("layers_counted"));
+  EXPECT_EQ(r->count("parity_passes"), r->count("layers_counted") * 5);
+}
+
+TEST(Csg, ScsPassesAreTheSequence) {
+  // One product each: n subtracted primitives in a sequence of n(n - 1) + 1, two passes an entry
+  // (the front faces mark, the back faces move the surface), and the intersection's clip twice.
+  for (const auto& [variant, n] :
+       {std::pair<const char*, long long>{"scs-rounded-cube", 3}, {"scs-grid", 25}}) {
+    const auto r = run(variant, std::string("--variant ") + variant, true);
+    if (!r) GTEST_SKIP() << "no GL context";
+    EXPECT_EQ(r->count("sequence_length"), n * (n - 1) + 1) << variant;
+    EXPECT_EQ(r->count("subtraction_passes"), 2 * (n * (n - 1) + 1)) << variant;
+    EXPECT_EQ(r->count("clip_passes"), 2) << variant;
+  }
+}
+
+TEST(Csg, OcclusionQueriesStopAtTheFirstEmptyLayer) {
+  // The torus with a bound of 8: the torus has 2 layers of front faces, the box 1 of back faces;
+  // each target tries one empty layer more and stops, 5 selections instead of 16.
+  const auto bound = run("bound", "--variant goldfeather-torus --set convexity=8 --set oracle=1", true);
+  if (!bound) GTEST_SKIP() << "no GL context";
+  const auto early =
+      run("early", "--variant goldfeather-torus --set convexity=8 --set queries=1 --set oracle=1", true);
+  EXPECT_EQ(bound->count("select_passes"), 16);
+  EXPECT_EQ(early->count("select_passes"), 5);
+  EXPECT_EQ(early->count("layers"), 3);
+  EXPECT_EQ(early->colour.pixels, bound->colour.pixels);
+  expectRayCastAgrees(*early, "goldfeather with queries");
+  // Layered without the count: layers until one is empty, as many as the count found, plus one.
+  const auto counted = run("counted", "--variant layered-torus", true);
+  const auto queried = run("queried", "--variant layered-torus --set queries=1 --set oracle=1", true);
+  EXPECT_EQ(queried->count("layers"), counted->count("layers_counted"));
+  EXPECT_EQ(queried->count("select_passes"), counted->count("layers_counted") + 1);
+  EXPECT_EQ(queried->colour.pixels, counted->colour.pixels);
+  expectRayCastAgrees(*queried, "layered with queries");
+}
+
+TEST(Csg, SceneFilesAreTheRayCast) {
+  // A scene file's csg line over its primitives and an OBJ mesh, with their transforms: each
+  // method the scene suits draws what the ray cast finds. The torus scene is concave (convexity
+  // 2), so SCS is not asked for it.
+  const struct {
+    const char* file;
+    std::vector<int> methods;
+  } scenes[] = {{"csg/drilled-box.scene", {1, 2, 3}}, {"csg/nested-torus.scene", {1, 2}}};
+  for (const auto& s : scenes)
+    for (int method : s.methods)
+      for (const char* time : {"1", "3"}) {
+        const std::string what =
+            std::string(s.file) + " method " + std::to_string(method) + " at t = " + time;
+        const auto r = run("scene",
+                           std::string("--scene ") + SCENES_DIR + "/" + s.file +
+                               " --set oracle=1 --set convexity=2 --set method=" + std::to_string(method) +
+                               " --time " + time,
+                           true);
+        if (!r) GTEST_SKIP() << "no GL context";
+        expectRayCastAgrees(*r, what);
+      }
+}
