@@ -60,6 +60,9 @@ namespace {
 
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 constexpr int kManyLights = 32;
+// The ambient light, in hundredths, of the views from inside the sphere's shadow: there the warm
+// light is behind the sphere, and at the scene's 0.12 most of the picture is near black.
+constexpr int kShadowAmbient = 40;
 
 // An orbit camera placed at `eye`, looking at `target`.
 OrbitCamera lookingFrom(glm::vec3 eye, glm::vec3 target, float fovyDeg) {
@@ -122,6 +125,18 @@ LessonInfo lessonInfo() {
        "      (volume-fill), whose fragments are every fragment the volumes rasterize",
        0},
       {"shadow", 'H', "shadows at all (off: every light reaches everything)", 1},
+      {"ambient", 'A',
+       "the built-in scene's ambient light, in hundredths (a scene file brings its own); the views\n"
+       "      from the sphere's shadow raise it, the warm light being behind the sphere there",
+       12, 100},
+      {"tint", 'W',
+       "overlay: the pixels the light drawn last leaves in shadow (stencil not 0) tinted blue, so a\n"
+       "      wrong count shows in the picture",
+       0},
+      {"stretch", 'K',
+       "overlay: a contrast stretch, the light sum doubled this many times before it is shown, so\n"
+       "      8-bit rounding's bands show",
+       0, 3},
   };
   info.camera.target = {-0.2f, 0.6f, 0.0f};
   info.camera.distance = 10.5f;
@@ -142,15 +157,23 @@ LessonInfo lessonInfo() {
        {},
        eyeInShadow()},
       {"looking-up",
-       "the eye in the sphere's shadow, looking up past it: the sphere in case 3",
-       {},
+       "the eye in the sphere's shadow, looking up past it: the sphere in case 3, its shadow tinted",
+       {{"ambient", kShadowAmbient}, {"tint", 1}},
        {},
        lookingUp()},
-      {"looking-up-colours", "the same with the overlay", {{"show", 1}}, {}, lookingUp()},
-      {"everitt-kilgard", "always z-fail with full caps", {{"method", 1}}, {}, lookingUp()},
+      {"looking-up-colours",
+       "the same with the overlay",
+       {{"ambient", kShadowAmbient}, {"show", 1}},
+       {},
+       lookingUp()},
+      {"everitt-kilgard",
+       "always z-fail with full caps",
+       {{"method", 1}, {"ambient", kShadowAmbient}, {"tint", 1}},
+       {},
+       lookingUp()},
       {"lengyel",
        "z-pass when no caster is in the pyramid, else full z-fail",
-       {{"method", 2}},
+       {{"method", 2}, {"ambient", kShadowAmbient}, {"tint", 1}},
        {},
        lookingUp()},
       {"zpass-only",
@@ -159,15 +182,17 @@ LessonInfo lessonInfo() {
        {},
        eyeInShadow()},
       {"no-light-cap",
-       "the case-3 sphere without its light cap: the count is wrong",
-       {{"light-cap", 0}},
+       "the case-3 sphere without its light cap: the count is wrong, the tint shows where",
+       {{"light-cap", 0}, {"ambient", kShadowAmbient}, {"tint", 1}},
        {},
        lookingUp()},
       {"no-bounds", "no culling or scissor: the same shadows, more work", {{"bounds", 0}}},
-      {"many-lights", "thirty-two dim lights accumulated in RGBA16F", {{"many", 1}}},
+      {"many-lights",
+       "thirty-two dim lights accumulated in RGBA16F, shown contrast-stretched fourfold",
+       {{"many", 1}, {"stretch", 2}}},
       {"many-lights-8bit",
-       "the same accumulated in RGBA8: each light rounded, bands",
-       {{"many", 1}, {"float", 0}}},
+       "the same accumulated in RGBA8: each light rounded, bands (stretched fourfold)",
+       {{"many", 1}, {"float", 0}, {"stretch", 2}}},
   };
   info.variants.push_back({"pinf-fixed24",
                            "the whole system on the old path: a 24-bit fixed-point depth buffer with GL's "
@@ -342,7 +367,9 @@ class FastRobustShadows final : public Lesson {
     solids_ = solidsSeenFrom(scene_, models_, f.eye);
     if (!solids_.refusal.empty()) throw UsageError(solids_.refusal);
     glEnable(GL_CULL_FACE);  // a closed object's back faces are hidden, unless the near plane cuts it
-    drawScene(f, glm::vec4(0, 1, 0, 0), glm::vec3(0), kInfinity, scene_.ambient);
+    const glm::vec3 ambient =
+        fromFile_ ? scene_.ambient : glm::vec3(0.01f * static_cast<float>(f.option("ambient")));
+    drawScene(f, glm::vec4(0, 1, 0, 0), glm::vec3(0), kInfinity, ambient);
     endPass(f, "ambient");
 
     // ---- per light: its shadow in the stencil, then its light where the stencil is 0 --------
@@ -424,7 +451,12 @@ class FastRobustShadows final : public Lesson {
     }
 
     // ---- the classroom's view: cases, volumes, silhouettes of the light drawn last ------------
+    if (f.option("stretch") > 0) {  // in the accumulation target, before RGBA16F is clamped to 8 bits
+      stretchContrast(f.option("stretch"));
+      target_->copyTo(framework_);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, framework_);
+    if (f.on("tint")) tintShadow();
     if (f.on("show")) drawOverlay(f);
     glDisable(GL_CULL_FACE);
     glFrontFace(GL_CCW);  // GL's default again
@@ -725,6 +757,44 @@ class FastRobustShadows final : public Lesson {
           (glm::dot(glm::vec3(nearPlane), world.center) + nearPlane.w) / length < world.radius;
       f.count("objects_cut_by_near_plane", cutByNearPlane_[i] && closed_[i] ? 1 : 0);
     }
+  }
+
+  // The light sum doubled `times` times in the accumulation target, which is bound: a rectangle
+  // over the window blended as destination * 1 + destination. Levels 8 bits would round to
+  // 1/255 apart come out 2^times levels apart once shown, where the eye can tell them.
+  void stretchContrast(int times) {
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_CULL_FACE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_DST_COLOR, GL_ONE);
+    flat_.set("transform", glm::mat4(1.0f));  // the rectangle is in clip space already
+    flat_.set("colour", glm::vec4(1.0f));
+    for (int i = 0; i < times; ++i) window_.draw();
+    glDisable(GL_BLEND);
+    glEnable(GL_DEPTH_TEST);
+  }
+
+  // Where the stencil the frame ends with is not 0 (the light drawn last is blocked), a blue
+  // tint: a count that goes wrong shows as tint where the picture should have none, or none
+  // where it should. Tests the stencil, writes only colour.
+  void tintShadow() {
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_STENCIL_TEST);
+    glStencilMask(0x00);
+    glStencilFunc(GL_NOTEQUAL, 0, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    flat_.set("transform", glm::mat4(1.0f));
+    flat_.set("colour", glm::vec4(0.2f, 0.45f, 1.0f, 0.35f));
+    window_.draw();
+    glDisable(GL_BLEND);
+    glStencilMask(0xFF);
+    glDisable(GL_STENCIL_TEST);
+    glEnable(GL_DEPTH_TEST);
   }
 
   void drawOverlay(const Frame& f) {

@@ -169,9 +169,9 @@ TEST(FastRobustShadows, LightBoundsCullWorkButNoPixel) {
 // so the sum drifts from the float sum, by at most half a level per light plus the float
 // result's own final rounding: more than the one level a single rounding can explain.
 TEST(FastRobustShadows, EightBitAccumulationRoundsEachLight) {
-  const auto floating = run("float", "--variant many-lights");
+  const auto floating = run("float", "--variant many-lights --set stretch=0");
   if (!floating) GTEST_SKIP() << "no GL context";
-  const auto eightBit = run("8bit", "--variant many-lights-8bit");
+  const auto eightBit = run("8bit", "--variant many-lights-8bit --set stretch=0");
   int largest = 0;
   double sum = 0.0;
   for (std::size_t i = 0; i < floating->colour.pixels.size(); i += 4)
@@ -184,6 +184,73 @@ TEST(FastRobustShadows, EightBitAccumulationRoundsEachLight) {
             << sum / double(3 * floating->colour.pixels.size() / 4) << "\n";
   EXPECT_GT(largest, 1);
   EXPECT_LE(largest, 32 / 2 + 1);
+}
+
+}  // namespace
+
+namespace {
+
+// Mean brightness, (r + g + b) / 3 in 0..1, of a colour picture.
+double meanBrightness(const Image& image) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < image.pixels.size(); i += 4)
+    sum += (image.pixels[i] + image.pixels[i + 1] + image.pixels[i + 2]) / 3.0;
+  return sum / 255.0 / double(image.pixels.size() / 4);
+}
+
+// Pixels where some channel differs by more than `levels` between two pictures.
+std::size_t pixelsDiffering(const Image& a, const Image& b, int levels) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < a.pixels.size(); i += 4) {
+    bool differs = false;
+    for (std::size_t c = 0; c < 3; ++c)
+      differs |= std::abs(int(a.pixels[i + c]) - int(b.pixels[i + c])) > levels;
+    n += differs;
+  }
+  return n;
+}
+
+// The views from inside the sphere's shadow are readable: the scene's 0.12 ambient left them at a
+// mean of 0.104, the system view's is 0.263.
+TEST(FastRobustShadows, ViewsFromTheShadowAreBrightEnoughToRead) {
+  for (const char* variant : {"looking-up", "everitt-kilgard", "lengyel", "no-light-cap"}) {
+    const auto r = run(variant, std::string("--variant ") + variant);
+    if (!r) GTEST_SKIP() << "no GL context";
+    const double mean = meanBrightness(r->colour);
+    std::cout << variant << ": mean brightness " << mean << "\n";
+    EXPECT_GT(mean, 0.15) << variant;
+  }
+}
+
+// Without the light cap the sphere's count is wrong; the shadow tint shows where in the colour
+// picture, not only in the stencil.
+TEST(FastRobustShadows, AMissingLightCapShowsInTheColourPicture) {
+  const auto right = run("right", "--variant looking-up");
+  if (!right) GTEST_SKIP() << "no GL context";
+  const auto wrong = run("wrong", "--variant no-light-cap");
+  const std::size_t verdicts = verdictsDiffering(right->stencil, wrong->stencil);
+  const std::size_t colours = pixelsDiffering(right->colour, wrong->colour, 16);
+  std::cout << "no light cap: " << verdicts << " verdicts wrong, " << colours << " colour pixels differ\n";
+  EXPECT_GT(verdicts, 0u);
+  EXPECT_GT(colours, right->colour.pixels.size() / 4 / 100);  // over 1% of the picture
+  EXPECT_GE(colours, verdicts * 9 / 10);                      // most wrong verdicts are seen
+}
+
+// The 8-bit bands are shown: the pictures of the two many-lights variants differ by more than
+// a few levels (2 mean per channel is below what the eye finds in a smooth gradient).
+TEST(FastRobustShadows, EightBitBandsShowInThePicture) {
+  const auto floating = run("float-shown", "--variant many-lights");
+  if (!floating) GTEST_SKIP() << "no GL context";
+  const auto eightBit = run("8bit-shown", "--variant many-lights-8bit");
+  double sum = 0.0;
+  for (std::size_t i = 0; i < floating->colour.pixels.size(); i += 4)
+    for (std::size_t c = 0; c < 3; ++c)
+      sum += std::abs(int(floating->colour.pixels[i + c]) - int(eightBit->colour.pixels[i + c]));
+  const double mean = sum / double(3 * floating->colour.pixels.size() / 4);
+  const std::size_t visible = pixelsDiffering(floating->colour, eightBit->colour, 6);
+  std::cout << "8-bit against float as shown: mean " << mean << " levels, " << visible
+            << " pixels over 6 levels\n";
+  EXPECT_GT(visible, floating->colour.pixels.size() / 4 / 20);  // over 5% of the picture
 }
 
 }  // namespace
