@@ -332,7 +332,8 @@ std::vector<VolumeChoice> chooseVolumes(ShadowMethod method, const std::vector<B
 }
 
 VolumeIndices casterVolume(const PreparedCaster& caster, const glm::vec4& light, const VolumeChoice& choice,
-                           bool lightCapOn, bool splitFan, const std::vector<bool>* litFaces) {
+                           bool lightCapOn, bool splitFan, const std::vector<bool>* litFaces,
+                           const std::vector<SilhouetteEdge>* silhouette) {
   VolumeIndices out;
   CasterVolume& v = out.volume;
   v.shadowCase = choice.shadowCase;
@@ -341,8 +342,10 @@ VolumeIndices casterVolume(const PreparedCaster& caster, const glm::vec4& light,
   const std::vector<bool> lit = litFaces ? *litFaces : facesLight(mesh, light);
   // An open mesh (a scene file's) blocks light with both sides of its faces: two volumes.
   const bool twoSided = !caster.report.closed();
-  const std::vector<SilhouetteEdge> edges =
-      twoSided ? twoSidedSilhouetteEdges(caster.adjacency, lit) : silhouetteEdges(caster.adjacency, lit);
+  const std::vector<SilhouetteEdge> edges = twoSided ? twoSidedSilhouetteEdges(caster.adjacency, lit)
+                                            : silhouette && !litFaces
+                                                ? *silhouette
+                                                : silhouetteEdges(caster.adjacency, lit);
   const bool directional = light.w == 0.0f;
   const bool fullCaps = choice.fullCaps;
   std::vector<std::uint32_t>& indices = out.indices;

@@ -199,9 +199,14 @@ struct VolumeIndices {
 // litFaces: the faces to take as facing the light instead of all that do (one piece of a closed
 // caster's light cap, shadow_volume.h's litFacePieces), with a full-caps z-fail choice: its dark
 // cap is then the piece pushed away (pieceDarkCapIndices), O(piece) rather than O(caster).
+// silhouette: the possible silhouette edges for this light found beforehand (a SilhouetteCaster's
+// passes or DualSilhouettes' query, both the list silhouetteEdges(adjacency, lit) gives), used
+// for a closed caster's whole volume in place of the brute force over its adjacency; an open
+// caster (two volumes) and a piece find their own.
 VolumeIndices casterVolume(const PreparedCaster& caster, const glm::vec4& light, const VolumeChoice& choice,
                            bool lightCap = true, bool splitFan = true,
-                           const std::vector<bool>* litFaces = nullptr);
+                           const std::vector<bool>* litFaces = nullptr,
+                           const std::vector<SilhouetteEdge>* silhouette = nullptr);
 
 // A light's bounds for one view: the sphere (radius infinite for a directional light or with
 // bounds off), its scissor rectangle (the whole window when unbounded; empty when off screen)

@@ -41,6 +41,7 @@
 #include <string>
 
 #include "geometry/bounds.h"
+#include "geometry/dual_silhouette.h"
 #include "geometry/fast_shadows.h"
 #include "geometry/projection.h"
 #include "geometry/scene.h"
@@ -137,6 +138,12 @@ LessonInfo lessonInfo() {
        "overlay: a contrast stretch, the light sum doubled this many times before it is shown, so\n"
        "      8-bit rounding's bands show",
        0, 3},
+      {"silhouettes", 'E',
+       "how a closed caster's possible silhouette edges are found, built once per caster and queried\n"
+       "      per light, the same edges each way: 0 brute force (every edge of the mesh's adjacency), 1\n"
+       "      streaming (a SilhouetteCaster's facing and edge passes), 2 dual space (a tree of face\n"
+       "      planes the light's plane cuts, DualSilhouettes); an open caster always takes 0",
+       0, 2},
   };
   info.camera.target = {-0.2f, 0.6f, 0.0f};
   info.camera.distance = 10.5f;
@@ -480,7 +487,32 @@ class FastRobustShadows final : public Lesson {
     std::unique_ptr<DoubledCaster> gpu;
     CasterVolume volume;  // for the light drawn last
     bool convex = false;  // a convex caster's volume nests once
+    // Built on first use (--set silhouettes=1 or 2) and kept with the caster; the tree reads
+    // the prepared caster, so both live behind pointers that do not move.
+    std::unique_ptr<SilhouetteCaster> streaming;
+    std::unique_ptr<DualSilhouettes> dual;
   };
+
+  // The possible silhouette edges of a closed caster for a light in its space, found the way
+  // --set silhouettes says; nothing for 0 (casterVolume's brute force) or an open caster.
+  const std::vector<SilhouetteEdge>* silhouetteOf(Frame& f, Caster& caster, const glm::vec4& local) {
+    const PreparedCaster& prepared = scene_.objects[caster.object].caster;
+    const int how = f.option("silhouettes");
+    if (how == 0 || !prepared.report.closed()) return nullptr;
+    if (!caster.streaming)
+      caster.streaming =
+          std::make_unique<SilhouetteCaster>(prepareSilhouettes(prepared.mesh, prepared.adjacency));
+    if (how == 1) {
+      facesLight(*caster.streaming, local, facing_);
+      silhouetteEdges(*caster.streaming, facing_, edges_);
+    } else {
+      if (!caster.dual) caster.dual = std::make_unique<DualSilhouettes>(*caster.streaming);
+      caster.dual->query(local, edges_);
+      f.count("dual_cells_visited", caster.dual->lastQuery().cellsVisited);
+      f.count("dual_edges_tested", caster.dual->lastQuery().edgesTested);
+    }
+    return &edges_;
+  }
 
   void setScene(const Scene& scene) {
     scene_ = scene;
@@ -503,7 +535,9 @@ class FastRobustShadows final : public Lesson {
                           boundingSphereOf(o.caster.mesh.positions),
                           std::make_unique<DoubledCaster>(o.caster.mesh),
                           {},
-                          isConvex(o.caster.mesh, o.caster.adjacency)});
+                          isConvex(o.caster.mesh, o.caster.adjacency),
+                          nullptr,
+                          nullptr});
     }
   }
 
@@ -621,7 +655,8 @@ class FastRobustShadows final : public Lesson {
                    bool checked) {
     Caster& caster = casters_[c];
     const PreparedCaster& prepared = scene_.objects[caster.object].caster;
-    VolumeIndices built = casterVolume(prepared, local, choice, f.on("light-cap"), f.on("split"));
+    VolumeIndices built = casterVolume(prepared, local, choice, f.on("light-cap"), f.on("split"), nullptr,
+                                       silhouetteOf(f, caster, local));
     const CasterVolume& v = built.volume;
     const bool closed = prepared.report.closed();
     const bool outside = local.w == 0.0f || glm::distance(glm::vec3(local) / local.w, caster.bounds.center) >
@@ -856,8 +891,10 @@ class FastRobustShadows final : public Lesson {
   std::vector<bool> cutByNearPlane_;          // per object, this frame: back faces drawn
   std::vector<Caster> casters_;
   std::vector<LightVolume> lightVolumes_;  // the current light's
-  GpuTriangles window_;                    // the whole window, for folding the count
-  double fillTime_ = 0.0;                  // and what drawVolumeFill needs
+  std::vector<std::uint8_t> facing_;       // silhouetteOf's facing flags and edges, reused
+  std::vector<SilhouetteEdge> edges_;
+  GpuTriangles window_;    // the whole window, for folding the count
+  double fillTime_ = 0.0;  // and what drawVolumeFill needs
   glm::vec4 fillLight_{0.0f};
   std::unique_ptr<AccumulationTarget> target_;
   GLuint framework_ = 0;

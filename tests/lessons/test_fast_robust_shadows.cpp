@@ -254,3 +254,26 @@ TEST(FastRobustShadows, EightBitBandsShowInThePicture) {
 }
 
 }  // namespace
+
+// The three ways of finding the possible silhouette edges (--set silhouettes) are one edge set:
+// the same stencil and the same colour, pixel for pixel, and the same side triangles, on a point
+// light above, the directional light and the eye looking up through the shadows; the dual-space
+// tree is really queried (it reports the cells it visited).
+TEST(FastRobustShadows, SilhouettesFoundEachWayAreTheSameEdges) {
+  for (const char* variant : {"system", "directional", "looking-up"}) {
+    const auto brute = run("brute", std::string("--variant ") + variant, true);
+    if (!brute) GTEST_SKIP() << "no GL context";
+    EXPECT_EQ(brute->count("dual_cells_visited"), -1) << variant;
+    for (int how : {1, 2}) {
+      const auto other =
+          run("silhouettes" + std::to_string(how),
+              std::string("--variant ") + variant + " --set silhouettes=" + std::to_string(how), true);
+      EXPECT_EQ(other->stencil.pixels, brute->stencil.pixels) << variant << ", silhouettes=" << how;
+      EXPECT_EQ(other->colour.pixels, brute->colour.pixels) << variant << ", silhouettes=" << how;
+      EXPECT_EQ(other->count("side_triangles"), brute->count("side_triangles")) << variant << ", " << how;
+      if (how == 2) {
+        EXPECT_GT(other->count("dual_cells_visited"), 0) << variant;
+      }
+    }
+  }
+}
