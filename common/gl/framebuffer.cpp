@@ -94,4 +94,15 @@ Image Framebuffer::readStencil() const {
   return image;
 }
 
+std::vector<float> Framebuffer::readDepth() const {
+  std::vector<float> depth(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  const auto row = static_cast<std::ptrdiff_t>(width_);
+  for (int y = 0; y < height_ / 2; ++y)
+    std::swap_ranges(depth.begin() + y * row, depth.begin() + (y + 1) * row, depth.end() - (y + 1) * row);
+  return depth;
+}
+
 }  // namespace stencil

@@ -3,6 +3,8 @@
 // Its stencil bits are verified, never assumed from a pixel format, so every backend gives the
 // same stencil buffer.
 #pragma once
+#include <vector>
+
 #include "gl/gl.h"
 #include "gl/image.h"
 
@@ -38,6 +40,8 @@ class Framebuffer {
 
   Image readColour() const;   // RGBA, top row first, alpha 255
   Image readStencil() const;  // one byte per pixel, top row first
+  // The depth buffer as window depths in [0, 1] (either format), width x height, top row first.
+  std::vector<float> readDepth() const;
 
  private:
   int width_, height_;

@@ -218,6 +218,7 @@ void Session::renderFrame(double time, FrameRequest request) {
   lesson->render(frame);
   recorder->endFrame();
   viewProjection = frame.projection * frame.view;
+  projection = frame.projection;
   if (commandLine.oracle) shadowCheck = lesson->shadowCheck(frame);
 }
 
@@ -414,6 +415,10 @@ void checkOutputs(const CommandLine& cl, const LessonInfo& info) {
     files.push_back({"--stencil-out", *cl.stencilOut});
     files.push_back({"--stencil-out's raw values", rawPathBeside(*cl.stencilOut)});
   }
+  if (cl.depthOut) {
+    checkPictureOutput(*cl.depthOut, "--depth-out", false);
+    files.push_back({"--depth-out", *cl.depthOut});
+  }
   if (cl.shadowHours) {
     checkPictureOutput(*cl.shadowHours, "--shadow-hours", true);
     files.push_back({"--shadow-hours", *cl.shadowHours});
@@ -544,6 +549,12 @@ int finishRun(Session& s, const Image& colour, const Image& stencil, const std::
   if (cl.stencilOut) {
     writePng(*cl.stencilOut, stencilPicture(cl, stencil));
     writePng(rawPathBeside(*cl.stencilOut), stencil);
+  }
+  if (cl.depthOut) {
+    DepthRange range;
+    writePng(*cl.depthOut, depthPicture(s.framebuffer->readDepth(), s.framebuffer->width(),
+                                        s.framebuffer->height(), s.projection, s.reversedDepth, &range));
+    if (!cl.quiet) std::cerr << depthLegendLine(range) << "\n";
   }
   if (cl.passesDir) {
     int index = 1;

@@ -121,6 +121,8 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
       cl.out = value();
     else if (flag == "--stencil-out")
       cl.stencilOut = value();
+    else if (flag == "--depth-out")
+      cl.depthOut = value();
     else if (flag == "--stencil-view") {
       const std::string v = value();
       if (v != "ramp" && v != "bits") throw UsageError("--stencil-view takes ramp or bits, got '" + v + "'");
@@ -242,6 +244,10 @@ std::string helpText(const LessonInfo& info, const std::string& program, bool re
       << "  --stencil-out FILE.png   the stencil buffer as a picture with a legend; the raw values\n"
       << "                           go beside it as FILE.raw.png (one grey byte per pixel)\n"
       << "  --stencil-view ramp|bits the picture: colour per value (default) or the 8 bit planes\n"
+      << "  --depth-out FILE.png     the depth buffer as a picture (the window's depth view): eye\n"
+      << "                           depth, nearest white to farthest dark grey, stretched over\n"
+      << "                           the depths present (the range is said on stderr and written\n"
+      << "                           under it); blue where the far plane or nothing was drawn\n"
       << "  --passes DIR             colour and stencil after each named pass\n"
       << "  --stats                  JSON on stdout: per pass draw calls, triangles, fragments\n"
       << "                           passed, primitives, GPU and CPU time (null where the driver\n"
@@ -274,8 +280,8 @@ std::string helpText(const LessonInfo& info, const std::string& program, bool re
       << "  --update-golden          write the goldens instead of comparing\n"
       << "  --artifacts DIR          where a failed comparison leaves its images and summary.json\n\n"
       << "Window keys: drag to orbit, wheel to zoom, R resets the camera, V next variant,\n"
-      << "P steps through the passes, Tab cycles colour/stencil/bit planes, Space pauses,\n"
-      << "S saves a screenshot, Esc quits.\n";
+      << "P steps through the passes, Tab cycles colour/stencil/bit planes/depth (the depth view as\n"
+      << "--depth-out draws it), Space pauses, S saves a screenshot, Esc quits.\n";
   if (!info.options.empty()) {
     out << "\nOptions (--set NAME=VALUE, or the key in the window)\n";
     for (const Option& o : info.options)

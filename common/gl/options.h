@@ -24,7 +24,7 @@ struct CommandLine {
   std::optional<int> frames;  // headless: 1 unless given; window: until closed unless given
   std::string variant;        // empty: the lesson's first
   std::vector<std::pair<std::string, int>> settings;  // --set NAME=VALUE
-  std::optional<std::filesystem::path> out, stencilOut, passesDir, golden, artifacts, shaderDir;
+  std::optional<std::filesystem::path> out, stencilOut, depthOut, passesDir, golden, artifacts, shaderDir;
   std::optional<std::filesystem::path> oracle;   // --oracle FILE.png: check the shadows by ray casting
   std::optional<std::filesystem::path> scene;    // --scene FILE: a scene lesson renders this scene
   std::optional<std::filesystem::path> maskOut;  // --mask-out DIR: the shadow masks (Frame::shadowMask)

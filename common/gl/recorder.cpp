@@ -104,7 +104,8 @@ void PassRecorder::pass(std::string_view name, std::string_view detail) {
                           .label = current_.label,
                           .index = index,
                           .colour = framebuffer_.readColour(),
-                          .stencil = framebuffer_.readStencil()});
+                          .stencil = framebuffer_.readStencil(),
+                          .depth = framebuffer_.readDepth()});
   framebuffer_.bind();  // reading may have changed the read binding; keep drawing into ours
   beginPass();
 }

@@ -37,6 +37,7 @@ struct Snapshot {
   std::string label;    // PassStats::label
   std::size_t index{};  // the pass's index in the frame
   Image colour, stencil;
+  std::vector<float> depth;  // window depths, top row first (Framebuffer::readDepth)
 };
 
 struct FrameRequest {

@@ -38,6 +38,7 @@ class Session {
   OrbitCamera camera;
   std::optional<ShadowCheck> shadowCheck;  // the last frame's, when --oracle asks for it
   glm::mat4 viewProjection{1.0f};          // the last frame's
+  glm::mat4 projection{1.0f};              // the last frame's Frame::projection (the depth view)
   bool saveShadowMasks = false;            // Frame::shadowMask writes under --mask-out (the last frame)
   Frame::ShadowMaskWriter shadowMaskHook;  // when set, Frame::shadowMask calls it instead (--shadow-hours)
   bool reversedDepth = false;              // the variant's reversed float depth, where the driver allows it

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <limits>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -40,7 +42,9 @@ int drawText(Image& img, int x, int y, const std::string& text, int scale, Rgb c
                                 : text[i] == ')' ? kClose
                                 : text[i] == '.' ? kPoint
                                 : text[i] == 'h' ? kHour
-                                                 : kDigits[static_cast<size_t>(text[i] - '0')];
+                                : text[i] >= '0' && text[i] <= '9'
+                                    ? kDigits[static_cast<size_t>(text[i] - '0')]
+                                    : std::uint16_t{0};  // a blank
     for (int row = 0; row < 5; ++row)
       for (int col = 0; col < 3; ++col)
         if (glyph & (1u << (14 - (row * 3 + col))))
@@ -386,6 +390,80 @@ Image shadowHoursPicture(const std::vector<std::uint16_t>& counts, int width, in
   std::copy(map.pixels.begin(), map.pixels.end(), out.pixels.begin());
   std::copy(legend.pixels.begin(), legend.pixels.end(), out.pixels.begin() + map.pixels.size());
   return out;
+}
+
+float eyeDepth(float windowDepth, const glm::mat4& projection, bool reversed) {
+  const float ndc = reversed ? 1.0f - 2.0f * windowDepth : 2.0f * windowDepth - 1.0f;
+  // clip z = P22 z + P32, clip w = P23 z + P33 (glm: [column][row]); ndc = clip z / clip w.
+  const float denominator = ndc * projection[2][3] - projection[2][2];
+  if (denominator == 0.0f) return std::numeric_limits<float>::infinity();
+  return -(projection[3][2] - ndc * projection[3][3]) / denominator;
+}
+
+Image depthPicture(const std::vector<float>& depth, int width, int height, const glm::mat4& projection,
+                   bool reversed, DepthRange* rangeOut) {
+  std::vector<float> eye(depth.size());
+  DepthRange range;
+  range.nearest = std::numeric_limits<float>::infinity();
+  range.farthest = -std::numeric_limits<float>::infinity();
+  for (std::size_t i = 0; i < depth.size(); ++i) {
+    const bool cleared = reversed ? depth[i] <= 0.0f : depth[i] >= 1.0f;
+    eye[i] = cleared ? std::numeric_limits<float>::quiet_NaN() : eyeDepth(depth[i], projection, reversed);
+    if (!std::isfinite(eye[i])) {
+      eye[i] = std::numeric_limits<float>::quiet_NaN();
+      ++range.cleared;
+      continue;
+    }
+    ++range.drawn;
+    range.nearest = std::min(range.nearest, eye[i]);
+    range.farthest = std::max(range.farthest, eye[i]);
+  }
+  if (range.drawn == 0) range.nearest = range.farthest = 0.0f;
+  const float span = range.farthest - range.nearest;
+  const auto grey = [&](float t) {  // t: 0 nearest .. 1 farthest
+    const auto g = static_cast<std::uint8_t>(std::lround(255.0f - t * (255.0f - kDepthFarGrey)));
+    return Rgb{g, g, g};
+  };
+
+  const int scale = 2, small = 2, band = 7 * scale + 8;
+  Image out(width, height + band, 4);
+  for (int py = 0; py < height; ++py)
+    for (int px = 0; px < width; ++px) {
+      const float e = eye[static_cast<std::size_t>(py) * static_cast<std::size_t>(width) + px];
+      fillRect(out, px, py, 1, 1,
+               std::isnan(e) ? kDepthClearedColour : grey(span > 0.0f ? (e - range.nearest) / span : 0.0f));
+    }
+  fillRect(out, 0, height, width, band, {48, 48, 48});
+  char nearText[32], farText[32];
+  std::snprintf(nearText, sizeof nearText, "%.2f", static_cast<double>(range.nearest));
+  std::snprintf(farText, sizeof farText, "%.2f", static_cast<double>(range.farthest));
+  const std::string clearedText = "(" + std::to_string(range.cleared) + ")";
+  const int top = height + 4, swatch = 5 * scale;
+  // The ramp between the two eye depths, then the cleared swatch and its count at the right.
+  const int clearedWidth = swatch + 3 + textWidth(clearedText, small) + 4;
+  int x = 4;
+  x += drawText(out, x, top, nearText, scale, {255, 255, 255}) + 3;
+  const int rampEnd = width - clearedWidth - textWidth(farText, scale) - 10;
+  for (int rx = x; rx < rampEnd; ++rx)
+    fillRect(out, rx, top, 1, swatch,
+             grey(static_cast<float>(rx - x) / static_cast<float>(std::max(1, rampEnd - x - 1))));
+  x = std::max(x, rampEnd) + 3;
+  x += drawText(out, x, top, farText, scale, {255, 255, 255}) + 6;
+  fillRect(out, x - 1, top - 1, swatch + 2, swatch + 2, {200, 200, 200});
+  fillRect(out, x, top, swatch, swatch, kDepthClearedColour);
+  drawText(out, x + swatch + 3, top + 5 * scale - 5 * small, clearedText, small, {170, 170, 170});
+  if (rangeOut) *rangeOut = range;
+  return out;
+}
+
+std::string depthLegendLine(const DepthRange& r) {
+  std::ostringstream line;
+  line.setf(std::ios::fixed);
+  line.precision(2);
+  line << "depth: eye depth " << r.nearest << " (white) to " << r.farthest
+       << " (dark grey), stretched linearly over the depths present; blue: the far plane or nothing drawn ("
+       << r.cleared << " pixels)";
+  return line.str();
 }
 
 }  // namespace stencil

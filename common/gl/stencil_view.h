@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
 
@@ -70,5 +71,32 @@ Image countPicture(const Image& stencil, bool saturates);
 // countColour(count, steps), and below, countLegend labelled in hours (count x stepMinutes / 60).
 Image shadowHoursPicture(const std::vector<std::uint16_t>& counts, int width, int height, int steps,
                          int stepMinutes);
+
+// The depth view. The eye depth (distance along the view direction, eye units) of a window depth
+// d in [0, 1] under `projection`, given in GL's convention (Frame::projection): normalised z is
+// 2d - 1, or 1 - 2d for reversed depth (geometry/projection.h), solved for eye z on the view axis.
+// Perspective (finite or infinite far plane) or parallel. Infinity at the infinite far plane.
+float eyeDepth(float windowDepth, const glm::mat4& projection, bool reversed);
+
+// What a depth picture shows: the nearest and farthest eye depth present (not counting cleared
+// pixels), and how many pixels hold the cleared depth (1, or 0 for reversed depth: the far plane
+// or nothing drawn).
+struct DepthRange {
+  float nearest = 0.0f, farthest = 0.0f;
+  std::uint64_t cleared = 0, drawn = 0;
+};
+
+// The depth buffer (window depths, width x height, top row first) as a picture: each drawn pixel
+// grey by its eye depth, the range of eye depths present stretched linearly from white (nearest,
+// 255) to dark grey (farthest, kDepthFarGrey), so a scene's depth reads whatever its near and far
+// planes; the cleared depth in kDepthClearedColour. Reversed depth gives the picture standard depth
+// gives for the same eye depths. Below, a legend band: the ramp with the nearest and farthest eye
+// depth written at its ends (2 decimals), and a swatch of the cleared colour with its pixel count.
+constexpr std::uint8_t kDepthFarGrey = 48;
+constexpr std::array<std::uint8_t, 3> kDepthClearedColour = {20, 40, 120};
+Image depthPicture(const std::vector<float>& depth, int width, int height, const glm::mat4& projection,
+                   bool reversed, DepthRange* range = nullptr);
+// One line for a terminal: the range a depth picture stretched, and what its colours mean.
+std::string depthLegendLine(const DepthRange&);
 
 }  // namespace stencil

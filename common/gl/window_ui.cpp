@@ -21,7 +21,8 @@
 namespace stencil {
 namespace {
 
-enum class View { Colour, StencilRamp, StencilBits };
+enum class View { Colour, StencilRamp, StencilBits, Depth };
+constexpr int kViews = 4;
 
 struct WindowState {
   Session& session;
@@ -39,6 +40,7 @@ struct WindowState {
   std::vector<std::filesystem::path> course = {};  // courseLessons()
   int lessonIndex = -1;                            // this lesson's place in it, -1 where it is not there
   bool sayLayout = false;                          // say the picture's size once the layout has changed
+  bool sayDepthRange = false;                      // say the depth view's legend once it is shown
 };
 
 WindowState& stateOf(GLFWwindow* w) {
@@ -83,7 +85,10 @@ void sayStep(const WindowState& st) {
 }
 
 const char* viewName(View v) {
-  return v == View::Colour ? "colour" : v == View::StencilRamp ? "stencil" : "bit planes";
+  return v == View::Colour        ? "colour"
+         : v == View::StencilRamp ? "stencil"
+         : v == View::StencilBits ? "bit planes"
+                                  : "depth";
 }
 
 // Closes this lesson's window to open the course's lesson at `index` in its place (Session::nextLesson).
@@ -116,8 +121,9 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
       say(st, st.paused ? "paused" : "running");
       return;
     case GLFW_KEY_TAB:
-      st.view = static_cast<View>((static_cast<int>(st.view) + 1) % 3);
+      st.view = static_cast<View>((static_cast<int>(st.view) + 1) % kViews);
       say(st, std::string("view: ") + viewName(st.view));
+      st.sayDepthRange = st.view == View::Depth;
       return;
     case GLFW_KEY_P:
       st.passStep = (mods & GLFW_MOD_SHIFT) ? (st.passStep < 0 ? passCount - 1 : st.passStep - 1)
@@ -252,7 +258,9 @@ void drawPanel(GLFWwindow* window, WindowState& st, double fps, float height) {
   ImGui::SameLine();
   ImGui::RadioButton("stencil", &view, 1);
   ImGui::SameLine();
-  ImGui::RadioButton("bits [Tab]", &view, 2);
+  ImGui::RadioButton("bits", &view, 2);
+  ImGui::SameLine();
+  ImGui::RadioButton("depth [Tab]", &view, 3);
   st.view = static_cast<View>(view);
   const std::string passName = stepName(s, st.passStep);
   ImGui::SliderInt("after pass [P]", &st.passStep, -1, passesRun(s) - 1, passName.c_str());
@@ -377,6 +385,13 @@ int runWindow(Session& s) {
       if (st.view == View::Colour && !snap) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, s.framebuffer->id());
         Display::blitFit(s.framebuffer->width(), s.framebuffer->height(), areaX, areaW, h, false);
+      } else if (st.view == View::Depth) {
+        DepthRange range;
+        shown = depthPicture(snap ? snap->depth : s.framebuffer->readDepth(), s.framebuffer->width(),
+                             s.framebuffer->height(), s.projection, s.reversedDepth, &range);
+        if (st.sayDepthRange) say(st, depthLegendLine(range));
+        st.sayDepthRange = false;
+        display.show(shown, areaX, areaW, h);
       } else {
         const Image stencil = snap ? snap->stencil : s.framebuffer->readStencil();
         shown = st.view == View::Colour        ? snap->colour
