@@ -12,6 +12,7 @@ packages=(
   libgl1 libglx-mesa0                # GLX for the window (GLFW loads libGL at run time)
   libglfw3-dev libimgui-dev          # the window and its panel
   libtinyobjloader-dev               # OBJ meshes in scene files
+  libembree-dev                      # the converged soft-shadow reference (Embree 3; optional)
   nlohmann-json3-dev                 # the --stats JSON, written and read
   python3-matplotlib                 # the sweeps' plots (tests/sweeps/plot_sweeps.py)
   libgtest-dev libbenchmark-dev      # unit tests, micro-benchmarks
