@@ -872,6 +872,9 @@ Scene parseScene(std::string_view text, const std::filesystem::path& file, const
         line.fail("more than " + std::to_string(kMaxSceneLights) + " lights; a scene has at most " +
                   std::to_string(kMaxSceneLights));
       readLight(line, scene.lights.emplace_back());
+      if (scene.lights.back().sun && std::count_if(scene.lights.begin(), scene.lights.end(),
+                                                   [](const SceneLight& l) { return bool(l.sun); }) > 1)
+        line.fail("a second sun; a scene has one sun (--shadow-hours moves it)");
     } else if (keyword == "object") {
       if (scene.objects.size() == kMaxSceneObjects)
         line.fail("more than " + std::to_string(kMaxSceneObjects) + " objects; a scene has at most " +

@@ -187,6 +187,8 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
     throw UsageError("--shadow-hours renders headless; it contradicts --backend window");
   if (cl.shadowHours && cl.frames)
     throw UsageError("--shadow-hours renders one frame per step; drop --frames");
+  if (cl.shadowHours && cl.stats)
+    throw UsageError("--shadow-hours writes its steps on stderr, no --stats JSON; drop --stats");
   if (cl.frames && std::abs(cl.time + (*cl.frames - 1) / 60.0) > kMaxTime)
     throw UsageError("--frames " + std::to_string(*cl.frames) + " from --time run past 1e6 seconds");
   if (cl.updateGolden && !cl.golden) throw UsageError("--update-golden needs --golden DIR");
