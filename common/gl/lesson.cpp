@@ -430,6 +430,23 @@ void checkOutputs(const CommandLine& cl, const LessonInfo& info) {
     files.push_back({"--oracle's raw classes", rawPathBeside(*cl.oracle)});
   }
   checkDistinctOutputs(files);
+  // The output folders' own names: --passes NN-pass.png (and .stencil.png, .stencil.raw.png),
+  // --mask-out light-<i>.png and step-HHMM.png. A file output that is such a folder, or would be
+  // one of its files, is refused: one would replace the other.
+  static const std::regex passNames("[0-9][0-9]-.*\\.png"), maskNames("(light-[0-9]+|step-[0-9]{4})\\.png");
+  const auto checkFolder = [&](const std::optional<std::filesystem::path>& folder, const std::string& flag,
+                               const std::regex& names) {
+    if (!folder) return;
+    const std::filesystem::path key = sameFileKey(*folder);
+    for (const OutputFile& f : files) {
+      const std::filesystem::path file = sameFileKey(f.path);
+      if (file == key || (file.parent_path() == key && std::regex_match(file.filename().string(), names)))
+        throw OutputError(f.flag + " " + f.path.string() + (file == key ? " is the " : " is a file of the ") +
+                          flag + " folder " + folder->string());
+    }
+  };
+  checkFolder(cl.passesDir, "--passes", passNames);
+  checkFolder(cl.maskOut, "--mask-out", maskNames);
   if (cl.passesDir) checkOutputFolder(*cl.passesDir, "--passes");
   if (cl.maskOut) checkOutputFolder(*cl.maskOut, "--mask-out");
   if (cl.golden && cl.updateGolden) checkOutputFolder(*cl.golden, "--golden");
