@@ -37,6 +37,7 @@
 #include "geometry/shadow_volume.h"
 #include "geometry/shapes.h"
 #include "geometry/soft_shadow.h"
+#include "geometry/soft_shadow_reference.h"
 #include "gl/errors.h"
 #include "gl/framebuffer.h"
 #include "gl/gpu_mesh.h"
@@ -85,6 +86,10 @@ LessonInfo lessonInfo() {
       {"visibility", 'Y',
        "each light adds 1/N of white, unshaded, to the ground: the picture is the visible fraction", 0},
       {"reference", 'Q', "the exact visible fraction (analytic; the slab only) instead of the lights", 0},
+      {"converged", '4',
+       "the reference ray cast instead, any casters: 2^converged stratified shadow rays per pixel\n"
+       "      (geometry/soft_shadow_reference.h; 0: the analytic one)",
+       0, 14},
       {"progressive", 'O', "each frame adds N new samples to a running average", 0},
       {"penumbra", 'X', "tint the penumbra: pixels some lights reach and some do not (float only)", 0},
       {"light", 'L', "the light whose hard shadow the final stencil holds (the one --oracle checks)", 0,
@@ -158,6 +163,9 @@ LessonInfo lessonInfo() {
        "64 Halton lights, the visible fraction unshaded",
        {{"lights", 64}, {"pattern", 2}, {"visibility", 1}}},
       {"reference", "the exact visible fraction, analytic", {{"reference", 1}, {"visibility", 1}}},
+      {"converged",
+       "the visible fraction past the slab and the ball, ray cast with 1024 shadow rays per pixel",
+       {{"reference", 1}, {"visibility", 1}, {"converged", 10}, {"casters", 3}}},
       {"penumbra", "the penumbra tinted", {{"penumbra", 1}}},
       {"wedges",
        "sixteen jittered lights, the N-light loop only inside the penumbra wedges",
@@ -425,14 +433,17 @@ class SoftShadows final : public Lesson {
   void render(Frame& f) override {
     const int n = f.option("lights");
     const bool kilgard = f.option("method") == 1;
-    if (f.on("reference") && (f.option("casters") != 1 || f.option("size") == 0))
-      throw UsageError("--set reference=1 needs casters=1 (the slab alone) and a light of size 1 or more");
+    if (f.on("reference") && f.option("size") == 0)
+      throw UsageError("--set reference=1 needs a light of size 1 or more");
+    if (f.on("reference") && !f.on("converged") && f.option("casters") != 1)
+      throw UsageError("--set reference=1 needs casters=1 (the slab alone) unless converged is on");
     if (f.on("wedges") && (kilgard || f.on("reference")))
       throw UsageError("--set wedges=1 needs method=0 (counting) and reference=0");
     for (const char* name :
          {"lights", "rounds", "samples", "stencil_clears", "volume_triangles", "illumination_draws",
           "light_groups", "penumbra_width_x_milli", "penumbra_width_x_predicted_milli",
-          "penumbra_width_z_milli", "penumbra_width_z_predicted_milli", "wedges", "wedge_triangles"})
+          "penumbra_width_z_milli", "penumbra_width_z_predicted_milli", "wedges", "wedge_triangles",
+          "reference_rays_per_pixel"})
       f.count(name, 0);
     GLint framework = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framework);
@@ -476,7 +487,9 @@ class SoftShadows final : public Lesson {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     endPass(f, "ambient");
 
-    if (f.on("reference")) {
+    if (f.on("reference") && f.on("converged")) {
+      drawConverged(f, scene, area, viewProjection);
+    } else if (f.on("reference")) {
       drawReference(f, area, viewProjection);
     } else if (kilgard) {
       kilgardLights(f, scene);
@@ -951,6 +964,37 @@ class SoftShadows final : public Lesson {
         px[0] = px[1] = px[2] = v;
         px[3] = v * n;
       }
+    glBindTexture(GL_TEXTURE_2D, target_->colour());
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, f.size.x, f.size.y, GL_RGBA, GL_FLOAT, pixels.data());
+    endPass(f, "illumination");
+  }
+
+  // The same picture for any casters: per pixel, the eye ray's first hit and, where that is a
+  // receiver, the fraction of 2^converged stratified shadow rays to the light that nothing blocks
+  // (geometry/soft_shadow_reference.h, through occlusionBackend()).
+  void drawConverged(Frame& f, const std::vector<Object>& scene, const AreaLight& area,
+                     const glm::mat4& viewProjection) {
+    OcclusionScene rays;
+    std::vector<bool> receives;
+    for (const Object& o : scene) {
+      rays.add(*o.mesh, o.model);
+      receives.push_back(!o.caster);
+    }
+    const int k = 1 << f.option("converged");
+    f.count("reference_rays_per_pixel", static_cast<std::uint64_t>(k));
+    const std::vector<float> fraction = convergedVisibility(
+        rays, [&](int object) { return receives[static_cast<std::size_t>(object)]; }, area,
+        glm::inverse(viewProjection), f.size, k);
+    const float n = static_cast<float>(f.option("lights"));
+    std::vector<float> pixels(static_cast<std::size_t>(4 * f.size.x * f.size.y), 0.0f);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, target_->fbo());
+    glReadPixels(0, 0, f.size.x, f.size.y, GL_RGBA, GL_FLOAT, pixels.data());
+    for (std::size_t i = 0; i < fraction.size(); ++i) {
+      if (fraction[i] < 0.0f) continue;  // the background and the casters stay as the ambient pass left them
+      float* px = &pixels[4 * i];
+      px[0] = px[1] = px[2] = fraction[i];
+      px[3] = fraction[i] * n;
+    }
     glBindTexture(GL_TEXTURE_2D, target_->colour());
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, f.size.x, f.size.y, GL_RGBA, GL_FLOAT, pixels.data());
     endPass(f, "illumination");
