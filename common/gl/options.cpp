@@ -209,7 +209,13 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
 
 std::string variantList(const LessonInfo& info) {
   std::ostringstream out;
-  for (const Variant& v : info.variants) out << v.name << "\t" << v.help << "\n";
+  for (const Variant& v : info.variants) {
+    // One line a variant, name and help split by a tab: CMake reads this list to make the tests.
+    if (v.name.find_first_of(" \t\n") != std::string::npos ||
+        v.help.find_first_of("\t\n") != std::string::npos)
+      throw std::logic_error("variant '" + v.name + "': its name or help has a tab or a line break");
+    out << v.name << "\t" << v.help << "\n";
+  }
   return out.str();
 }
 

@@ -208,3 +208,14 @@ TEST(ShaderLog, MesaAndNvidiaLinesBecomeFileLine) {
             "s.vert:7: error C1008: undefined variable \"x\"");
   EXPECT_EQ(formatCompileLog("s.vert", ""), "s.vert: compile failed with an empty log");
 }
+
+// --list-variants is read by CMake one line a variant (tests/variants.cmake): a help that breaks
+// the line would make a test of half a sentence.
+TEST(CommandLine, VariantListIsOneLineAVariant) {
+  LessonInfo i = info();
+  EXPECT_EQ(variantList(i), "default\tas declared\noff\tstencil off\n");
+  i.variants[1].help = "two\nlines";
+  EXPECT_THROW(variantList(i), std::logic_error);
+  i.variants[1] = {"with space", "help", {}};
+  EXPECT_THROW(variantList(i), std::logic_error);
+}
