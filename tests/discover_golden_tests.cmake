@@ -11,6 +11,13 @@ foreach(variant IN LISTS variants)
       "add_test([=[${name}]=] [=[${EXE}]=] --backend ${backend} --size ${SIZE} --time ${TIME} "
       "--variant [=[${variant}]=] --golden [=[${GOLDEN_DIR}]=] --artifacts [=[${ARTIFACTS}/${variant}-${backend}]=] --quiet)\n"
       "set_tests_properties([=[${name}]=] PROPERTIES SKIP_RETURN_CODE 77 LABELS golden TIMEOUT 60)\n")
+    if(backend STREQUAL "egl")
+      set(environment "LIBGL_ALWAYS_SOFTWARE=1")
+      if(MESA_EGL_VENDOR)
+        string(APPEND environment ";__EGL_VENDOR_LIBRARY_FILENAMES=${MESA_EGL_VENDOR}")
+      endif()
+      string(APPEND content "set_tests_properties([=[${name}]=] PROPERTIES ENVIRONMENT [=[${environment}]=])\n")
+    endif()
   endforeach()
 endforeach()
 

@@ -133,4 +133,8 @@ void writeGolden(const Image& colour, const Image& stencil, const std::filesyste
   writePng(goldenStencilPath(dir, name), stencil);
 }
 
+bool isGoldenRenderer(const std::string& renderer) {
+  return renderer.find("llvmpipe") != std::string::npos;
+}
+
 }  // namespace stencil

@@ -94,3 +94,11 @@ TEST(GoldenCheck, MissingGoldenFailsWithItsPath) {
   EXPECT_FALSE(r.passed);
   EXPECT_NE(r.message.find("nope.png"), std::string::npos) << r.message;
 }
+
+// The renderer strings the goldens are made with, and two they are not (GL_RENDERER as drivers
+// report it).
+TEST(Golden, OnlyLlvmpipeIsComparedWithTheGoldens) {
+  EXPECT_TRUE(isGoldenRenderer("llvmpipe (LLVM 15.0.6, 256 bits)"));
+  EXPECT_FALSE(isGoldenRenderer("NVIDIA H200/PCIe/SSE2"));
+  EXPECT_FALSE(isGoldenRenderer("AMD Radeon RX 6800 (radeonsi, navi21, LLVM 15.0.6, DRM 3.49)"));
+}
