@@ -3,6 +3,7 @@
 // the backends, the window, stats, snapshots, goldens — is the framework's, the same for
 // every lesson. The stencil, depth, colour-mask and cull calls stay in the lesson.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <glm/glm.hpp>
@@ -56,6 +57,22 @@ struct OrbitCamera {
 // orthographic, mirrored). Throws std::invalid_argument for what an orbit camera cannot be: an
 // up other than +y, an eye on the target or straight above or below it.
 OrbitCamera orbitCameraOf(const SceneCamera&);
+
+// The orbit camera whose eye stands at `eye` looking at `target` (world space, +y up): distance
+// |eye - target|, azimuthDeg atan2(x, z) and elevationDeg asin(y / distance) of eye - target, the
+// inverse of OrbitCamera::eye(). Field of view, planes and the rest keep OrbitCamera's defaults.
+// The caller keeps eye off the target and off the vertical through it (no azimuth there). Inline:
+// for a lesson's constant eye and target the compiler evaluates it correctly rounded, where the C
+// library's asin and atan2 may differ by an ulp, and an ulp in the camera moves pixels.
+inline OrbitCamera orbitCameraFrom(glm::vec3 eye, glm::vec3 target) {
+  const glm::vec3 back = eye - target;
+  OrbitCamera c;
+  c.target = target;
+  c.distance = glm::length(back);
+  c.elevationDeg = glm::degrees(std::asin(back.y / c.distance));
+  c.azimuthDeg = glm::degrees(std::atan2(back.x, back.z));  // eye() puts the eye at (sin az, ., cos az)
+  return c;
+}
 
 // A named configuration of the options, e.g. "stencil-off" to show the artifact.
 struct Variant {

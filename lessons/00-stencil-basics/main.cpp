@@ -30,71 +30,9 @@ namespace {
 
 enum Demo { Keyhole = 0, Ops = 1, Clear = 2 };
 
-LessonInfo lessonInfo() {
-  LessonInfo info;
-  info.id = "00-stencil-basics";
-  info.title = "Stencil basics";
-  info.summary =
-      "Tag pixels in one pass, control the next with the tag; the stencil function, reference,\n"
-      "masks and the three operations; the write mask applies to glClear too.";
-  info.options = {
-      {"demo", 'D', "0 keyhole, 1 the three operations, 2 masked clear", Keyhole, 2},
-      {"stencil", 'T', "the stencil test on; off shows what the tag was for", 1},
-      {"masked-clear", 'M', "clear the stencil with write mask 0x02 instead of 0xFF", 1},
-  };
-  info.variants = {
-      {"keyhole",
-       "a keyhole tagged in the stencil shows the day scene, elsewhere night",
-       {{"demo", Keyhole}}},
-      {"stencil-off",
-       "the same passes without the stencil test: night paints over everything",
-       {{"demo", Keyhole}, {"stencil", 0}}},
-      {"ops", "one draw, three outcomes: stencil fail, depth fail, depth pass", {{"demo", Ops}}},
-      {"masked-clear",
-       "glClear with write mask 0x02 clears bit 1 and keeps bit 0",
-       {{"demo", Clear}, {"masked-clear", 1}}},
-      {"full-clear", "glClear with write mask 0xFF clears both tags", {{"demo", Clear}, {"masked-clear", 0}}},
-  };
-  info.passes = {"clear", "tag", "day", "night", "occluder", "ops", "show", "clear-stencil"};
-  info.camera.distance = 7.0f;
-  info.camera.target = {0.0f, 0.6f, 0.0f};
-  return info;
-}
-
-// A filled shape in the z=0 plane from a closed 2D outline, as a triangle fan around its
-// centre (the outlines here are star-shaped about it).
-Mesh fan(const std::vector<glm::vec2>& outline, glm::vec2 centre) {
-  Mesh m;
-  m.positions.push_back({centre, 0.0f});
-  for (glm::vec2 p : outline) m.positions.push_back({p, 0.0f});
-  const auto n = static_cast<std::uint32_t>(outline.size());
-  for (std::uint32_t i = 0; i < n; ++i) m.indices.insert(m.indices.end(), {0u, 1 + i, 1 + (i + 1) % n});
-  return m;
-}
-
-Mesh disc(float radius, int segments) {
-  std::vector<glm::vec2> outline;
-  for (int i = 0; i < segments; ++i) {
-    const float a = 2.0f * glm::pi<float>() * static_cast<float>(i) / static_cast<float>(segments);
-    outline.push_back(radius * glm::vec2(std::cos(a), std::sin(a)));
-  }
-  return fan(outline, {0, 0});
-}
-
-// A keyhole: a circle on top of a flared slot, about 0.9 units tall, centred on the origin.
-Mesh keyhole() {
-  std::vector<glm::vec2> outline;
-  const float r = 0.25f, cy = 0.2f;
-  const float a0 = std::asin(0.12f / r);  // where the slot meets the circle
-  for (int i = 0; i <= 40; ++i) {
-    const float a =
-        -glm::half_pi<float>() + a0 + (2.0f * glm::pi<float>() - 2.0f * a0) * static_cast<float>(i) / 40.0f;
-    outline.push_back({r * std::cos(a), cy + r * std::sin(a)});
-  }
-  outline.push_back({-0.2f, -0.5f});
-  outline.push_back({0.2f, -0.5f});
-  return fan(outline, {0.0f, 0.0f});
-}
+// The stencil shapes, made after the lesson.
+Mesh disc(float radius, int segments);
+Mesh keyhole();
 
 class StencilBasics final : public Lesson {
  public:
@@ -291,6 +229,76 @@ class StencilBasics final : public Lesson {
   Program lit_, flat_;
   GpuMesh ground_, torus_, cube_, keyhole_, disc_, screen_;
 };
+
+// ---- the stencil shapes ----------------------------------------------------------------------------
+
+// A filled shape in the z=0 plane from a closed 2D outline, as a triangle fan around its
+// centre (the outlines here are star-shaped about it).
+Mesh fan(const std::vector<glm::vec2>& outline, glm::vec2 centre) {
+  Mesh m;
+  m.positions.push_back({centre, 0.0f});
+  for (glm::vec2 p : outline) m.positions.push_back({p, 0.0f});
+  const auto n = static_cast<std::uint32_t>(outline.size());
+  for (std::uint32_t i = 0; i < n; ++i) m.indices.insert(m.indices.end(), {0u, 1 + i, 1 + (i + 1) % n});
+  return m;
+}
+
+Mesh disc(float radius, int segments) {
+  std::vector<glm::vec2> outline;
+  for (int i = 0; i < segments; ++i) {
+    const float a = 2.0f * glm::pi<float>() * static_cast<float>(i) / static_cast<float>(segments);
+    outline.push_back(radius * glm::vec2(std::cos(a), std::sin(a)));
+  }
+  return fan(outline, {0, 0});
+}
+
+// A keyhole: a circle on top of a flared slot, about 0.9 units tall, centred on the origin.
+Mesh keyhole() {
+  std::vector<glm::vec2> outline;
+  const float r = 0.25f, cy = 0.2f;
+  const float a0 = std::asin(0.12f / r);  // where the slot meets the circle
+  for (int i = 0; i <= 40; ++i) {
+    const float a =
+        -glm::half_pi<float>() + a0 + (2.0f * glm::pi<float>() - 2.0f * a0) * static_cast<float>(i) / 40.0f;
+    outline.push_back({r * std::cos(a), cy + r * std::sin(a)});
+  }
+  outline.push_back({-0.2f, -0.5f});
+  outline.push_back({0.2f, -0.5f});
+  return fan(outline, {0.0f, 0.0f});
+}
+
+// ---- the lesson: options, variants, camera -------------------------------------------------------
+
+LessonInfo lessonInfo() {
+  LessonInfo info;
+  info.id = "00-stencil-basics";
+  info.title = "Stencil basics";
+  info.summary =
+      "Tag pixels in one pass, control the next with the tag; the stencil function, reference,\n"
+      "masks and the three operations; the write mask applies to glClear too.";
+  info.options = {
+      {"demo", 'D', "0 keyhole, 1 the three operations, 2 masked clear", Keyhole, 2},
+      {"stencil", 'T', "the stencil test on; off shows what the tag was for", 1},
+      {"masked-clear", 'M', "clear the stencil with write mask 0x02 instead of 0xFF", 1},
+  };
+  info.variants = {
+      {"keyhole",
+       "a keyhole tagged in the stencil shows the day scene, elsewhere night",
+       {{"demo", Keyhole}}},
+      {"stencil-off",
+       "the same passes without the stencil test: night paints over everything",
+       {{"demo", Keyhole}, {"stencil", 0}}},
+      {"ops", "one draw, three outcomes: stencil fail, depth fail, depth pass", {{"demo", Ops}}},
+      {"masked-clear",
+       "glClear with write mask 0x02 clears bit 1 and keeps bit 0",
+       {{"demo", Clear}, {"masked-clear", 1}}},
+      {"full-clear", "glClear with write mask 0xFF clears both tags", {{"demo", Clear}, {"masked-clear", 0}}},
+  };
+  info.passes = {"clear", "tag", "day", "night", "occluder", "ops", "show", "clear-stencil"};
+  info.camera.distance = 7.0f;
+  info.camera.target = {0.0f, 0.6f, 0.0f};
+  return info;
+}
 
 }  // namespace
 

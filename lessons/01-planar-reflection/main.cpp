@@ -24,33 +24,6 @@ using namespace stencil;
 
 namespace {
 
-LessonInfo lessonInfo() {
-  LessonInfo info;
-  info.id = "01-planar-reflection";
-  info.title = "Planar reflection without the stencil";
-  info.summary =
-      "The scene drawn through a plane's reflection matrix with the cull face flipped, the mirror into\n"
-      "depth, then the scene: right for a polished floor, leaking for a free-standing mirror.";
-  info.options = {
-      {"mirror", 'M', "0 a polished floor under the scene (constrained), 1 a free-standing tilted mirror", 0,
-       1},
-      {"reflect", 'E', "draw the reflection at all (off: the reference the tests compare with)", 1},
-      {"flip", 'L', "flip the cull face for the reflection (off: the reflection turns inside out)", 1},
-  };
-  info.variants = {
-      {"floor", "a polished floor: the reflection stays under the floor, as it should", {}},
-      {"free-standing",
-       "a free-standing mirror: the reflection leaks past its edges, and what stands behind it appears",
-       {{"mirror", 1}}},
-  };
-  info.passes = {"reflection", "mirror", "scene"};
-  info.camera.distance = 7.5f;
-  info.camera.azimuthDeg = 30.0f;
-  info.camera.elevationDeg = 28.0f;
-  info.camera.target = {0.0f, 0.6f, -0.4f};
-  return info;
-}
-
 constexpr glm::vec4 kSky{0.55f, 0.65f, 0.8f, 1.0f};
 constexpr glm::vec4 kLight{1.5f, 4.5f, 2.5f, 1.0f};
 constexpr GLint kMirrorDrawn = 1;
@@ -177,6 +150,35 @@ class PlanarReflection final : public Lesson {
   GpuMesh floor_, glass_, box_, torus_, sphere_, cone_;
   StandingMirror mirror_;
 };
+
+// ---- the lesson: options, variants, camera -------------------------------------------------------
+
+LessonInfo lessonInfo() {
+  LessonInfo info;
+  info.id = "01-planar-reflection";
+  info.title = "Planar reflection without the stencil";
+  info.summary =
+      "The scene drawn through a plane's reflection matrix with the cull face flipped, the mirror into\n"
+      "depth, then the scene: right for a polished floor, leaking for a free-standing mirror.";
+  info.options = {
+      {"mirror", 'M', "0 a polished floor under the scene (constrained), 1 a free-standing tilted mirror", 0,
+       1},
+      {"reflect", 'E', "draw the reflection at all (off: the reference the tests compare with)", 1},
+      {"flip", 'L', "flip the cull face for the reflection (off: the reflection turns inside out)", 1},
+  };
+  info.variants = {
+      {"floor", "a polished floor: the reflection stays under the floor, as it should", {}},
+      {"free-standing",
+       "a free-standing mirror: the reflection leaks past its edges, and what stands behind it appears",
+       {{"mirror", 1}}},
+  };
+  info.passes = {"reflection", "mirror", "scene"};
+  info.camera.distance = 7.5f;
+  info.camera.azimuthDeg = 30.0f;
+  info.camera.elevationDeg = 28.0f;
+  info.camera.target = {0.0f, 0.6f, -0.4f};
+  return info;
+}
 
 }  // namespace
 

@@ -27,44 +27,6 @@ using namespace stencil;
 
 namespace {
 
-LessonInfo lessonInfo() {
-  LessonInfo info;
-  info.id = "02-stenciled-mirrors";
-  info.title = "Stenciled mirrors";
-  info.summary =
-      "Kilgard's steps per mirror: tag the visible mirror pixels, reset their depth, draw the reflected\n"
-      "scene only there with a clip plane at the mirror, restore the depth and clear the tag.";
-  info.options = {
-      {"stencil", 'T', "tag each mirror and draw its reflection only on the tag", 1},
-      {"clip", 'C', "clip the reflected scene at the mirror's plane (gl_ClipDistance)", 1},
-      {"reflect", 'E', "draw the reflections at all (off: plain glass, the tests' reference)", 1},
-      {"semi", 'M', "semi-reflective: polished marble blended over the reflection", 0},
-      {"mirrors", 'N', "how many of the three mirrors stand in the scene", 3, 3},
-      {"straddle", 'D', "a rod straddling the first mirror's plane (a hard case)", 0},
-      {"cut", 'X', "cut the rod at the mirror's plane (the straddle test's reference)", 0},
-      {"grazing", 'G', "turn the third mirror almost edge-on to the eye (a hard case)", 0},
-      {"order", 'O', "process the mirrors in reverse order (the picture must not change)", 0},
-  };
-  info.variants = {
-      {"mirrors", "three stenciled mirrors, one in front of another", {}},
-      {"semi-reflective", "polished marble: the reflection blended with the stone", {{"semi", 1}}},
-      {"stencil-off",
-       "the same steps without the tag or the clip plane: lesson 01's leaks come back",
-       {{"stencil", 0}, {"clip", 0}}},
-      {"no-clip", "stencil but no clip plane: what stands behind a mirror appears in it", {{"clip", 0}}},
-      {"straddle",
-       "a rod through the mirror: only its part on the reflective side is reflected",
-       {{"mirrors", 1}, {"straddle", 1}}},
-      {"grazing", "the third mirror seen almost edge-on: a thin reflection, no leak", {{"grazing", 1}}},
-  };
-  info.passes = {"scene", "tag", "far", "reflection", "restore"};
-  info.camera.distance = 8.5f;
-  info.camera.azimuthDeg = 25.0f;
-  info.camera.elevationDeg = 22.0f;
-  info.camera.target = {0.0f, 0.8f, -0.5f};
-  return info;
-}
-
 constexpr GLint kTag = 1;   // a mirror's visible pixels while it is being reflected
 constexpr GLint kDone = 2;  // a reflection was drawn here: not the tag, so later mirrors skip it
 static_assert(kDone == kTag + 1, "the restore pass turns the tag into kDone with GL_INCR");
@@ -299,6 +261,46 @@ class StenciledMirrors final : public Lesson {
   Program light_, clipped_, marble_, flat_;
   GpuMesh floor_, glass_, box_, torus_, sphere_, cone_, rod_;
 };
+
+// ---- the lesson: options, variants, camera -------------------------------------------------------
+
+LessonInfo lessonInfo() {
+  LessonInfo info;
+  info.id = "02-stenciled-mirrors";
+  info.title = "Stenciled mirrors";
+  info.summary =
+      "Kilgard's steps per mirror: tag the visible mirror pixels, reset their depth, draw the reflected\n"
+      "scene only there with a clip plane at the mirror, restore the depth and clear the tag.";
+  info.options = {
+      {"stencil", 'T', "tag each mirror and draw its reflection only on the tag", 1},
+      {"clip", 'C', "clip the reflected scene at the mirror's plane (gl_ClipDistance)", 1},
+      {"reflect", 'E', "draw the reflections at all (off: plain glass, the tests' reference)", 1},
+      {"semi", 'M', "semi-reflective: polished marble blended over the reflection", 0},
+      {"mirrors", 'N', "how many of the three mirrors stand in the scene", 3, 3},
+      {"straddle", 'D', "a rod straddling the first mirror's plane (a hard case)", 0},
+      {"cut", 'X', "cut the rod at the mirror's plane (the straddle test's reference)", 0},
+      {"grazing", 'G', "turn the third mirror almost edge-on to the eye (a hard case)", 0},
+      {"order", 'O', "process the mirrors in reverse order (the picture must not change)", 0},
+  };
+  info.variants = {
+      {"mirrors", "three stenciled mirrors, one in front of another", {}},
+      {"semi-reflective", "polished marble: the reflection blended with the stone", {{"semi", 1}}},
+      {"stencil-off",
+       "the same steps without the tag or the clip plane: lesson 01's leaks come back",
+       {{"stencil", 0}, {"clip", 0}}},
+      {"no-clip", "stencil but no clip plane: what stands behind a mirror appears in it", {{"clip", 0}}},
+      {"straddle",
+       "a rod through the mirror: only its part on the reflective side is reflected",
+       {{"mirrors", 1}, {"straddle", 1}}},
+      {"grazing", "the third mirror seen almost edge-on: a thin reflection, no leak", {{"grazing", 1}}},
+  };
+  info.passes = {"scene", "tag", "far", "reflection", "restore"};
+  info.camera.distance = 8.5f;
+  info.camera.azimuthDeg = 25.0f;
+  info.camera.elevationDeg = 22.0f;
+  info.camera.target = {0.0f, 0.8f, -0.5f};
+  return info;
+}
 
 }  // namespace
 

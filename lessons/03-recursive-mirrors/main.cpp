@@ -37,65 +37,8 @@ constexpr int kStencilBits = 8;
 constexpr int kMaxLevel = (1 << kStencilBits) - 1;  // the deepest level the stencil can count
 constexpr std::uint64_t kMaxRenderings = 20000;     // more would take minutes per frame
 
-LessonInfo lessonInfo() {
-  LessonInfo info;
-  info.id = "03-recursive-mirrors";
-  info.title = "Recursive mirrors";
-  info.summary =
-      "Reflections of reflections: the stencil counts the recursion level with INCR and DECR, depth\n"
-      "first; a hall of mirrors, mirrors that all see each other, culling and the far plane.";
-  info.stencilBits = kStencilBits;
-  info.options = {
-      {"mirrors", 'N',
-       "mirrors on a regular polygon facing inwards (2: two parallel mirrors; 1: one; 0: none)", 2, 6},
-      {"depth", 'D', "how many bounces deep (the stencil counts up to 255)", 8, 1000},
-      {"culling", 'C', "cull objects and mirrors outside a frustum through each mirror", 1},
-      {"far", 'F', "move the far plane out to the deepest reflection drawn", 1},
-      {"flip", 'L', "flip the cull face with each reflection's determinant", 1},
-      {"birds-eye", 'B', "every re-rendering drawn without the stencil, seen from above", 0},
-  };
-  info.variants = {
-      {"hall", "two parallel mirrors, 8 bounces: the hall of mirrors", {}},
-      {"hall-shallow", "the same hall, 2 bounces: deeper mirrors show plain glass", {{"depth", 2}}},
-      {"three-mirrors", "three mirrors that see each other, 4 bounces", {{"mirrors", 3}, {"depth", 4}}},
-      {"far-plane", "the hall with the camera's far plane: deep reflections cut off", {{"far", 0}}},
-      {"birds-eye",
-       "the re-renderings of three mirrors, 3 bounces, drawn without the stencil and seen from above",
-       {{"mirrors", 3}, {"depth", 3}, {"birds-eye", 1}}},
-  };
-  info.passes = {"scene", "reflection", "restore", "mark"};  // "reflection": one per level drawn
-  info.camera.target = {0.0f, 1.0f, -2.0f};                  // on the first mirror
-  info.camera.distance = 3.7f;
-  info.camera.azimuthDeg = 22.0f;
-  info.camera.elevationDeg = 8.0f;
-  info.camera.farPlane = 20.0f;  // the hall's fourth reflection lies beyond it
-  return info;
-}
-
 constexpr glm::vec4 kSky{0.55f, 0.65f, 0.8f, 1.0f};
 constexpr float kInradius = 2.0f;  // from the room's centre to each mirror
-
-struct Mirror {
-  glm::vec3 centre, normal;  // the glass faces `normal`
-  float halfWidth, halfHeight;
-
-  glm::vec3 right() const { return glm::normalize(glm::cross(glm::vec3(0, 1, 0), normal)); }
-  glm::vec3 up() const { return glm::cross(normal, right()); }
-  glm::vec4 plane() const { return planeFrom(centre, normal); }
-  std::vector<glm::vec3> corners() const {
-    const glm::vec3 r = right() * halfWidth, u = up() * halfHeight;
-    return {centre - r - u, centre + r - u, centre + r + u, centre - r + u};
-  }
-  glm::mat4 glassModel() const {  // makePlane's square (y = 0, facing +y), winding kept
-    return {glm::vec4(right() * halfWidth, 0), glm::vec4(normal, 0), glm::vec4(-up() * halfHeight, 0),
-            glm::vec4(centre, 1)};
-  }
-  glm::mat4 frameModel() const {  // a thin box just behind the glass: frame and back
-    const float border = 0.07f, depth = 0.03f;
-    return {glm::vec4(right() * (halfWidth + border), 0), glm::vec4(up() * (halfHeight + border), 0),
-            glm::vec4(normal * depth, 0), glm::vec4(centre - normal * (depth + 0.005f), 1)};
-  }
-};
 
 // One re-rendering of the scene: level 0 is the real one; level k + 1 is seen in `mirror`
 // from level k. Positions are drawn through `reflect`; `eye` is the eye carried back into
@@ -108,14 +51,6 @@ struct Level {
   glm::vec3 eye{0.0f};
   Frustum frustum;
   glm::vec4 clip{0.0f};  // drawn-space plane: keep what lies behind the mirror as drawn
-};
-
-struct Object {
-  const GpuMesh* mesh;
-  glm::mat4 model;
-  glm::vec3 colour;
-  float shininess;
-  BoundingSphere bounds;  // world space
 };
 
 class RecursiveMirrors final : public Lesson {
@@ -191,6 +126,38 @@ class RecursiveMirrors final : public Lesson {
   }
 
  private:
+  // ---- the mirrors and the objects --------------------------------------------------------------
+
+  struct Mirror {
+    glm::vec3 centre, normal;  // the glass faces `normal`
+    float halfWidth, halfHeight;
+
+    glm::vec3 right() const { return glm::normalize(glm::cross(glm::vec3(0, 1, 0), normal)); }
+    glm::vec3 up() const { return glm::cross(normal, right()); }
+    glm::vec4 plane() const { return planeFrom(centre, normal); }
+    std::vector<glm::vec3> corners() const {
+      const glm::vec3 r = right() * halfWidth, u = up() * halfHeight;
+      return {centre - r - u, centre + r - u, centre + r + u, centre - r + u};
+    }
+    glm::mat4 glassModel() const {  // makePlane's square (y = 0, facing +y), winding kept
+      return {glm::vec4(right() * halfWidth, 0), glm::vec4(normal, 0), glm::vec4(-up() * halfHeight, 0),
+              glm::vec4(centre, 1)};
+    }
+    glm::mat4 frameModel() const {  // a thin box just behind the glass: frame and back
+      const float border = 0.07f, depth = 0.03f;
+      return {glm::vec4(right() * (halfWidth + border), 0), glm::vec4(up() * (halfHeight + border), 0),
+              glm::vec4(normal * depth, 0), glm::vec4(centre - normal * (depth + 0.005f), 1)};
+    }
+  };
+
+  struct Object {
+    const GpuMesh* mesh;
+    glm::mat4 model;
+    glm::vec3 colour;
+    float shininess;
+    BoundingSphere bounds;  // world space
+  };
+
   // ---- the recursion ---------------------------------------------------------------------------
 
   // The levels seen from level l, one per mirror that can show something.
@@ -395,6 +362,43 @@ class RecursiveMirrors final : public Lesson {
   BoundingSphere sceneBounds_;
   glm::mat4 viewProjection_{1.0f};
 };
+
+// ---- the lesson: options, variants, camera -------------------------------------------------------
+
+LessonInfo lessonInfo() {
+  LessonInfo info;
+  info.id = "03-recursive-mirrors";
+  info.title = "Recursive mirrors";
+  info.summary =
+      "Reflections of reflections: the stencil counts the recursion level with INCR and DECR, depth\n"
+      "first; a hall of mirrors, mirrors that all see each other, culling and the far plane.";
+  info.stencilBits = kStencilBits;
+  info.options = {
+      {"mirrors", 'N',
+       "mirrors on a regular polygon facing inwards (2: two parallel mirrors; 1: one; 0: none)", 2, 6},
+      {"depth", 'D', "how many bounces deep (the stencil counts up to 255)", 8, 1000},
+      {"culling", 'C', "cull objects and mirrors outside a frustum through each mirror", 1},
+      {"far", 'F', "move the far plane out to the deepest reflection drawn", 1},
+      {"flip", 'L', "flip the cull face with each reflection's determinant", 1},
+      {"birds-eye", 'B', "every re-rendering drawn without the stencil, seen from above", 0},
+  };
+  info.variants = {
+      {"hall", "two parallel mirrors, 8 bounces: the hall of mirrors", {}},
+      {"hall-shallow", "the same hall, 2 bounces: deeper mirrors show plain glass", {{"depth", 2}}},
+      {"three-mirrors", "three mirrors that see each other, 4 bounces", {{"mirrors", 3}, {"depth", 4}}},
+      {"far-plane", "the hall with the camera's far plane: deep reflections cut off", {{"far", 0}}},
+      {"birds-eye",
+       "the re-renderings of three mirrors, 3 bounces, drawn without the stencil and seen from above",
+       {{"mirrors", 3}, {"depth", 3}, {"birds-eye", 1}}},
+  };
+  info.passes = {"scene", "reflection", "restore", "mark"};  // "reflection": one per level drawn
+  info.camera.target = {0.0f, 1.0f, -2.0f};                  // on the first mirror
+  info.camera.distance = 3.7f;
+  info.camera.azimuthDeg = 22.0f;
+  info.camera.elevationDeg = 8.0f;
+  info.camera.farPlane = 20.0f;  // the hall's fourth reflection lies beyond it
+  return info;
+}
 
 }  // namespace
 

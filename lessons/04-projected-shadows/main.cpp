@@ -24,57 +24,6 @@ using namespace stencil;
 
 namespace {
 
-LessonInfo lessonInfo() {
-  LessonInfo info;
-  info.id = "04-projected-shadows";
-  info.title = "Planar projected shadows";
-  info.summary =
-      "The caster flattened onto the ground by the shadow matrix; z-fighting, double blending and\n"
-      "shadows off the ground's edge, and the stencil recipe that removes all three.";
-  info.options = {
-      {"stencil", 'T', "tag the ground and draw the shadow only on the tag, once per pixel", 1},
-      {"offset", 'O', "polygon offset for the unstenciled shadow (fights z-fighting only)", 0},
-      {"low-light", 'L', "a low light to the side: the shadow runs past the ground's edge", 0},
-      {"directional", 'D', "a directional light (w = 0) instead of a point light", 0},
-      {"shadow", 'H', "draw the shadow pass at all (off: the reference the tests compare with)", 1},
-      {"clip", 'C', "keep only the caster's part between the ground and the light", 1},
-      {"case", 'K',
-       "a hard case: 1 caster partly buried, 2 light below the ground, 3 light level with the caster's\n"
-       "      top, 4 grazing directional light, 5 ground with a hole",
-       0, 5},
-  };
-  info.variants = {
-      {"stencil", "Kilgard's recipe: one darkening per pixel, only on the ground", {}},
-      {"z-fighting",
-       "no stencil, no offset: the shadow fights the ground for depth",
-       {{"stencil", 0}, {"offset", 0}}},
-      {"double-blending",
-       "no stencil, polygon offset: overlaps of the flattened torus darken twice",
-       {{"stencil", 0}, {"offset", 1}}},
-      {"off-the-edge",
-       "no stencil, a low light: the shadow hangs in the air past the edge",
-       {{"stencil", 0}, {"offset", 1}, {"low-light", 1}}},
-      {"off-the-edge-stencil",
-       "the same low light with the stencil: the shadow ends at the edge",
-       {{"low-light", 1}}},
-      {"directional", "a directional light: parallel projection, same recipe", {{"directional", 1}}},
-      {"buried", "the torus partly below the ground: the buried part casts nothing", {{"case", 1}}},
-      {"buried-unclipped",
-       "the same without clipping: the buried part projects a false shadow",
-       {{"case", 1}, {"clip", 0}}},
-      {"light-below", "the light below the ground: no shadow on its top side", {{"case", 2}}},
-      {"light-at-top", "a light level with the torus top: the shadow runs to infinity", {{"case", 3}}},
-      {"grazing", "a directional light 10 degrees above the horizon: a very long shadow", {{"case", 4}}},
-      {"hole", "a ground with a hole: no shadow in the hole", {{"case", 5}}},
-  };
-  info.shadows = true;
-  info.passes = {"scene", "shadow"};
-  info.camera.distance = 7.5f;
-  info.camera.elevationDeg = 35.0f;
-  info.camera.target = {0.0f, 0.4f, 0.0f};
-  return info;
-}
-
 constexpr float kShadowAlpha = 0.5f;  // each darkening keeps half the light
 constexpr GLint kGroundTag = 1;
 
@@ -160,20 +109,6 @@ class ProjectedShadows final : public Lesson {
     f.pass("shadow");
   }
 
-  // With the stencil, the visible ground keeps its tag exactly where the light reaches it.
-  std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
-    if (!f.on("stencil") || !f.on("shadow")) return std::nullopt;
-    const glm::vec4 light = lightAt(f);
-    ShadowCheck check{
-        {{&torusMesh_, casterModel(f), true, false},
-         {f.option("case") == kHole ? &holedGroundMesh_ : &groundMesh_, glm::mat4(1), false, true}},
-        light,
-        [](std::uint8_t s) { return s == kGroundTag; }};
-    if (light.w != 0.0f)
-      check.objects.push_back({&markerMesh_, glm::translate(glm::mat4(1), glm::vec3(light)), false, false});
-    return check;
-  }
-
  private:
   static constexpr int kBuried = 1, kLightBelow = 2, kLightAtTop = 3, kGrazing = 4, kHole = 5;
 
@@ -233,7 +168,77 @@ class ProjectedShadows final : public Lesson {
   Program lit_, flat_, shadow_;
   Mesh groundMesh_, holedGroundMesh_, torusMesh_, markerMesh_;  // kept for the oracle's ray cast
   GpuMesh ground_, holedGround_, torus_, marker_;
+
+  // ---- test hooks ---------------------------------------------------------------------------------
+
+ public:
+  // With the stencil, the visible ground keeps its tag exactly where the light reaches it.
+  std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
+    if (!f.on("stencil") || !f.on("shadow")) return std::nullopt;
+    const glm::vec4 light = lightAt(f);
+    ShadowCheck check{
+        {{&torusMesh_, casterModel(f), true, false},
+         {f.option("case") == kHole ? &holedGroundMesh_ : &groundMesh_, glm::mat4(1), false, true}},
+        light,
+        [](std::uint8_t s) { return s == kGroundTag; }};
+    if (light.w != 0.0f)
+      check.objects.push_back({&markerMesh_, glm::translate(glm::mat4(1), glm::vec3(light)), false, false});
+    return check;
+  }
 };
+
+// ---- the lesson: options, variants, camera -------------------------------------------------------
+
+LessonInfo lessonInfo() {
+  LessonInfo info;
+  info.id = "04-projected-shadows";
+  info.title = "Planar projected shadows";
+  info.summary =
+      "The caster flattened onto the ground by the shadow matrix; z-fighting, double blending and\n"
+      "shadows off the ground's edge, and the stencil recipe that removes all three.";
+  info.options = {
+      {"stencil", 'T', "tag the ground and draw the shadow only on the tag, once per pixel", 1},
+      {"offset", 'O', "polygon offset for the unstenciled shadow (fights z-fighting only)", 0},
+      {"low-light", 'L', "a low light to the side: the shadow runs past the ground's edge", 0},
+      {"directional", 'D', "a directional light (w = 0) instead of a point light", 0},
+      {"shadow", 'H', "draw the shadow pass at all (off: the reference the tests compare with)", 1},
+      {"clip", 'C', "keep only the caster's part between the ground and the light", 1},
+      {"case", 'K',
+       "a hard case: 1 caster partly buried, 2 light below the ground, 3 light level with the caster's\n"
+       "      top, 4 grazing directional light, 5 ground with a hole",
+       0, 5},
+  };
+  info.variants = {
+      {"stencil", "Kilgard's recipe: one darkening per pixel, only on the ground", {}},
+      {"z-fighting",
+       "no stencil, no offset: the shadow fights the ground for depth",
+       {{"stencil", 0}, {"offset", 0}}},
+      {"double-blending",
+       "no stencil, polygon offset: overlaps of the flattened torus darken twice",
+       {{"stencil", 0}, {"offset", 1}}},
+      {"off-the-edge",
+       "no stencil, a low light: the shadow hangs in the air past the edge",
+       {{"stencil", 0}, {"offset", 1}, {"low-light", 1}}},
+      {"off-the-edge-stencil",
+       "the same low light with the stencil: the shadow ends at the edge",
+       {{"low-light", 1}}},
+      {"directional", "a directional light: parallel projection, same recipe", {{"directional", 1}}},
+      {"buried", "the torus partly below the ground: the buried part casts nothing", {{"case", 1}}},
+      {"buried-unclipped",
+       "the same without clipping: the buried part projects a false shadow",
+       {{"case", 1}, {"clip", 0}}},
+      {"light-below", "the light below the ground: no shadow on its top side", {{"case", 2}}},
+      {"light-at-top", "a light level with the torus top: the shadow runs to infinity", {{"case", 3}}},
+      {"grazing", "a directional light 10 degrees above the horizon: a very long shadow", {{"case", 4}}},
+      {"hole", "a ground with a hole: no shadow in the hole", {{"case", 5}}},
+  };
+  info.shadows = true;
+  info.passes = {"scene", "shadow"};
+  info.camera.distance = 7.5f;
+  info.camera.elevationDeg = 35.0f;
+  info.camera.target = {0.0f, 0.4f, 0.0f};
+  return info;
+}
 
 }  // namespace
 

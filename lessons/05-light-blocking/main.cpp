@@ -24,42 +24,6 @@ using namespace stencil;
 
 namespace {
 
-LessonInfo lessonInfo() {
-  LessonInfo info;
-  info.id = "05-light-blocking";
-  info.title = "Shadows that block the light";
-  info.summary =
-      "The shadow marked in the stencil and the ground re-rendered without the light there, then the\n"
-      "general algorithm: several planar surfaces, several coloured lights, ambient once.";
-  info.options = {
-      {"block", 'B', "block the light (on) or blend a dark shadow over it as in lesson 04 (off)", 1},
-      {"multi", 'M', "three surfaces and coloured lights, the general algorithm", 0},
-      {"lights", 'N', "how many coloured lights in the general algorithm", 3, 3},
-      {"darkness", 'A', "tenths of the light a blended shadow takes away (block off)", 5, 10},
-      {"shadow", 'H', "draw the shadows at all (off: every surface fully lit)", 1},
-      {"light", 'G', "the light on (off: ambient only; with shadow off, the reference's two halves)", 1},
-  };
-  info.variants = {
-      {"block", "the shadow blocks the light: the ground is re-rendered without it", {}},
-      {"dampen",
-       "lesson 04's blended shadow: the highlight and the light's colour show through",
-       {{"block", 0}}},
-      {"multi",
-       "three surfaces, three coloured lights: each light's shadow in its own colour",
-       {{"multi", 1}}},
-      {"multi-one-light",
-       "the general algorithm with one light, to read one shadow per surface",
-       {{"multi", 1}, {"lights", 1}}},
-  };
-  info.shadows = true;
-  info.passes = {"scene", "shadow", "unlit", "ambient", "light 1", "light 2", "light 3"};
-  info.camera.distance = 8.0f;
-  info.camera.azimuthDeg = 40.0f;
-  info.camera.elevationDeg = 28.0f;
-  info.camera.target = {-0.4f, 0.9f, -0.4f};
-  return info;
-}
-
 constexpr float kRoom = 2.5f;  // half the size of the ground and of each wall
 
 struct Surface {
@@ -108,20 +72,6 @@ class LightBlocking final : public Lesson {
       renderGeneral(f);
     else
       renderOneLight(f);
-  }
-
-  // One light on the ground: its visible pixels keep their tag exactly where the light
-  // reaches them, in both forms (INCR marks the shadow, the blended shadow ZEROes it).
-  std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
-    if (f.on("multi") || !f.on("shadow")) return std::nullopt;
-    const Light light = lightsAt(f)[0];
-    const GLint tag = surfaces_[0].tag;
-    return ShadowCheck{
-        {{&torusMesh_, casterModel(f), true, false},
-         {&panelMesh_, surfaces_[0].model, false, true},
-         {&markerMesh_, glm::translate(glm::mat4(1), glm::vec3(light.position)), false, false}},
-        light.position,
-        [tag](std::uint8_t s) { return s == tag; }};
   }
 
  private:
@@ -315,7 +265,62 @@ class LightBlocking final : public Lesson {
   Mesh panelMesh_, torusMesh_, markerMesh_;  // kept for the oracle's ray cast
   GpuMesh panel_, torus_, marker_;
   std::array<Surface, 3> surfaces_;
+
+  // ---- test hooks ---------------------------------------------------------------------------------
+
+ public:
+  // One light on the ground: its visible pixels keep their tag exactly where the light
+  // reaches them, in both forms (INCR marks the shadow, the blended shadow ZEROes it).
+  std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
+    if (f.on("multi") || !f.on("shadow")) return std::nullopt;
+    const Light light = lightsAt(f)[0];
+    const GLint tag = surfaces_[0].tag;
+    return ShadowCheck{
+        {{&torusMesh_, casterModel(f), true, false},
+         {&panelMesh_, surfaces_[0].model, false, true},
+         {&markerMesh_, glm::translate(glm::mat4(1), glm::vec3(light.position)), false, false}},
+        light.position,
+        [tag](std::uint8_t s) { return s == tag; }};
+  }
 };
+
+// ---- the lesson: options, variants, camera -------------------------------------------------------
+
+LessonInfo lessonInfo() {
+  LessonInfo info;
+  info.id = "05-light-blocking";
+  info.title = "Shadows that block the light";
+  info.summary =
+      "The shadow marked in the stencil and the ground re-rendered without the light there, then the\n"
+      "general algorithm: several planar surfaces, several coloured lights, ambient once.";
+  info.options = {
+      {"block", 'B', "block the light (on) or blend a dark shadow over it as in lesson 04 (off)", 1},
+      {"multi", 'M', "three surfaces and coloured lights, the general algorithm", 0},
+      {"lights", 'N', "how many coloured lights in the general algorithm", 3, 3},
+      {"darkness", 'A', "tenths of the light a blended shadow takes away (block off)", 5, 10},
+      {"shadow", 'H', "draw the shadows at all (off: every surface fully lit)", 1},
+      {"light", 'G', "the light on (off: ambient only; with shadow off, the reference's two halves)", 1},
+  };
+  info.variants = {
+      {"block", "the shadow blocks the light: the ground is re-rendered without it", {}},
+      {"dampen",
+       "lesson 04's blended shadow: the highlight and the light's colour show through",
+       {{"block", 0}}},
+      {"multi",
+       "three surfaces, three coloured lights: each light's shadow in its own colour",
+       {{"multi", 1}}},
+      {"multi-one-light",
+       "the general algorithm with one light, to read one shadow per surface",
+       {{"multi", 1}, {"lights", 1}}},
+  };
+  info.shadows = true;
+  info.passes = {"scene", "shadow", "unlit", "ambient", "light 1", "light 2", "light 3"};
+  info.camera.distance = 8.0f;
+  info.camera.azimuthDeg = 40.0f;
+  info.camera.elevationDeg = 28.0f;
+  info.camera.target = {-0.4f, 0.9f, -0.4f};
+  return info;
+}
 
 }  // namespace
 

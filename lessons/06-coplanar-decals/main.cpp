@@ -37,39 +37,6 @@ namespace {
 
 enum Method { Stencil = 0, DepthTest = 1, PolygonOffset = 2, DepthOff = 3 };
 
-LessonInfo lessonInfo() {
-  LessonInfo info;
-  info.id = "06-coplanar-decals";
-  info.title = "Co-planar decals";
-  info.summary =
-      "Runway markings and a projected shadow drawn exactly on the runway: z-fighting with the\n"
-      "depth test, polygon offset, and the stencil recipe that needs no depth comparison at all.";
-  info.options = {
-      {"method", 'M', "decals by: 0 stencil tag, 1 depth test, 2 polygon offset, 3 depth test off", Stencil,
-       3},
-      {"decals", 'D', "draw the markings and the shadow at all (off: the bare runway, for the tests)", 1},
-  };
-  info.variants = {
-      {"stencil", "Kilgard's recipe: decals with the depth test off, only on the tagged runway", {}},
-      {"z-fighting",
-       "decals with the plain depth test: they fight the runway pixel by pixel",
-       {{"method", DepthTest}}},
-      {"polygon-offset",
-       "glPolygonOffset pulls each decal layer towards the eye: the usual fix",
-       {{"method", PolygonOffset}}},
-      {"depth-off",
-       "depth test off and no stencil: the markings paint over the tower",
-       {{"method", DepthOff}}},
-  };
-  info.passes = {"scenery", "runway", "decals", "shadow", "objects"};
-  info.camera.distance = 11.0f;
-  info.camera.azimuthDeg = 30.0f;
-  info.camera.elevationDeg = 24.0f;
-  info.camera.target = {0.0f, 0.0f, 1.0f};
-  info.camera.farPlane = 30.0f;  // the grass ends at the far plane: a straight horizon
-  return info;
-}
-
 constexpr float kRunwayHalfWidth = 1.2f, kRunwayHalfLength = 7.0f;
 constexpr float kShadowAlpha = 0.5f;  // the shadow keeps half the light, once
 constexpr GLint kRunwayTag = 1;
@@ -81,47 +48,9 @@ glm::mat4 at(glm::vec3 position) {
   return glm::translate(glm::mat4(1), position);
 }
 
-// One more part in a mesh, placed by `placement` (normals follow through `transformed`).
-void append(Mesh& into, const Mesh& part, const glm::mat4& placement) {
-  const Mesh moved = transformed(part, placement);
-  const auto base = static_cast<std::uint32_t>(into.positions.size());
-  into.positions.insert(into.positions.end(), moved.positions.begin(), moved.positions.end());
-  into.normals.insert(into.normals.end(), moved.normals.begin(), moved.normals.end());
-  for (std::uint32_t i : moved.indices) into.indices.push_back(base + i);
-}
-
-// A w x l rectangle in the runway's plane (y = 0), centred at (x, z).
-void addMark(Mesh& into, float x, float z, float w, float l) {
-  append(into, makePlane(0.5f, 1), glm::scale(at({x, 0.0f, z}), {w, 1.0f, l}));
-}
-
-// The painted markings, all in y = 0 like the runway itself, as one mesh.
-Mesh makeMarkings() {
-  Mesh m;
-  for (float end : {-1.0f, 1.0f}) {
-    for (float i : {0.0f, 1.0f, 2.0f, 3.0f})  // threshold bars, four each side of the centre line
-      for (float side : {-1.0f, 1.0f}) addMark(m, side * (0.22f + 0.24f * i), end * 6.1f, 0.14f, 1.1f);
-    for (float side : {-1.0f, 1.0f})  // aiming-point blocks
-      addMark(m, side * 0.55f, end * 3.9f, 0.3f, 1.2f);
-  }
-  for (int i = -3; i <= 3; ++i) addMark(m, 0.0f, 1.4f * static_cast<float>(i), 0.1f, 0.8f);  // centre dashes
-  for (float side : {-1.0f, 1.0f})                                                           // edge lines
-    addMark(m, side * 1.08f, 0.0f, 0.07f, 2.0f * kRunwayHalfLength - 0.2f);
-  return m;
-}
-
-// A small aircraft, nose towards -z: fuselage, nose cone, wings, tailplane and fin.
-Mesh makeAircraft() {
-  const glm::mat4 alongZ = glm::rotate(glm::mat4(1), glm::radians(-90.0f), {1, 0, 0});  // +y to -z
-  const auto box = [](glm::vec3 centre, glm::vec3 size) { return glm::scale(at(centre), size); };
-  Mesh m;
-  append(m, makeCylinder(0.11f, 1.2f, 16), alongZ);
-  append(m, makeCone(0.11f, 0.3f, 16), at({0, 0, -0.75f}) * alongZ);
-  append(m, makeCube(0.5f), box({0.0f, 0.0f, -0.1f}, {1.6f, 0.04f, 0.3f}));
-  append(m, makeCube(0.5f), box({0.0f, 0.0f, 0.5f}, {0.6f, 0.04f, 0.18f}));
-  append(m, makeCube(0.5f), box({0.0f, 0.15f, 0.5f}, {0.04f, 0.3f, 0.2f}));
-  return m;
-}
+// The scene's meshes, built after the lesson.
+Mesh makeMarkings();
+Mesh makeAircraft();
 
 class CoplanarDecals final : public Lesson {
  public:
@@ -244,6 +173,85 @@ class CoplanarDecals final : public Lesson {
   Program lit_, flat_;
   GpuMesh grass_, runway_, markings_, aircraft_, arch_, tower_, cab_;
 };
+
+// ---- the scene's meshes ---------------------------------------------------------------------------
+
+// One more part in a mesh, placed by `placement` (normals follow through `transformed`).
+void append(Mesh& into, const Mesh& part, const glm::mat4& placement) {
+  const Mesh moved = transformed(part, placement);
+  const auto base = static_cast<std::uint32_t>(into.positions.size());
+  into.positions.insert(into.positions.end(), moved.positions.begin(), moved.positions.end());
+  into.normals.insert(into.normals.end(), moved.normals.begin(), moved.normals.end());
+  for (std::uint32_t i : moved.indices) into.indices.push_back(base + i);
+}
+
+// A w x l rectangle in the runway's plane (y = 0), centred at (x, z).
+void addMark(Mesh& into, float x, float z, float w, float l) {
+  append(into, makePlane(0.5f, 1), glm::scale(at({x, 0.0f, z}), {w, 1.0f, l}));
+}
+
+// The painted markings, all in y = 0 like the runway itself, as one mesh.
+Mesh makeMarkings() {
+  Mesh m;
+  for (float end : {-1.0f, 1.0f}) {
+    for (float i : {0.0f, 1.0f, 2.0f, 3.0f})  // threshold bars, four each side of the centre line
+      for (float side : {-1.0f, 1.0f}) addMark(m, side * (0.22f + 0.24f * i), end * 6.1f, 0.14f, 1.1f);
+    for (float side : {-1.0f, 1.0f})  // aiming-point blocks
+      addMark(m, side * 0.55f, end * 3.9f, 0.3f, 1.2f);
+  }
+  for (int i = -3; i <= 3; ++i) addMark(m, 0.0f, 1.4f * static_cast<float>(i), 0.1f, 0.8f);  // centre dashes
+  for (float side : {-1.0f, 1.0f})                                                           // edge lines
+    addMark(m, side * 1.08f, 0.0f, 0.07f, 2.0f * kRunwayHalfLength - 0.2f);
+  return m;
+}
+
+// A small aircraft, nose towards -z: fuselage, nose cone, wings, tailplane and fin.
+Mesh makeAircraft() {
+  const glm::mat4 alongZ = glm::rotate(glm::mat4(1), glm::radians(-90.0f), {1, 0, 0});  // +y to -z
+  const auto box = [](glm::vec3 centre, glm::vec3 size) { return glm::scale(at(centre), size); };
+  Mesh m;
+  append(m, makeCylinder(0.11f, 1.2f, 16), alongZ);
+  append(m, makeCone(0.11f, 0.3f, 16), at({0, 0, -0.75f}) * alongZ);
+  append(m, makeCube(0.5f), box({0.0f, 0.0f, -0.1f}, {1.6f, 0.04f, 0.3f}));
+  append(m, makeCube(0.5f), box({0.0f, 0.0f, 0.5f}, {0.6f, 0.04f, 0.18f}));
+  append(m, makeCube(0.5f), box({0.0f, 0.15f, 0.5f}, {0.04f, 0.3f, 0.2f}));
+  return m;
+}
+
+// ---- the lesson: options, variants, camera -------------------------------------------------------
+
+LessonInfo lessonInfo() {
+  LessonInfo info;
+  info.id = "06-coplanar-decals";
+  info.title = "Co-planar decals";
+  info.summary =
+      "Runway markings and a projected shadow drawn exactly on the runway: z-fighting with the\n"
+      "depth test, polygon offset, and the stencil recipe that needs no depth comparison at all.";
+  info.options = {
+      {"method", 'M', "decals by: 0 stencil tag, 1 depth test, 2 polygon offset, 3 depth test off", Stencil,
+       3},
+      {"decals", 'D', "draw the markings and the shadow at all (off: the bare runway, for the tests)", 1},
+  };
+  info.variants = {
+      {"stencil", "Kilgard's recipe: decals with the depth test off, only on the tagged runway", {}},
+      {"z-fighting",
+       "decals with the plain depth test: they fight the runway pixel by pixel",
+       {{"method", DepthTest}}},
+      {"polygon-offset",
+       "glPolygonOffset pulls each decal layer towards the eye: the usual fix",
+       {{"method", PolygonOffset}}},
+      {"depth-off",
+       "depth test off and no stencil: the markings paint over the tower",
+       {{"method", DepthOff}}},
+  };
+  info.passes = {"scenery", "runway", "decals", "shadow", "objects"};
+  info.camera.distance = 11.0f;
+  info.camera.azimuthDeg = 30.0f;
+  info.camera.elevationDeg = 24.0f;
+  info.camera.target = {0.0f, 0.0f, 1.0f};
+  info.camera.farPlane = 30.0f;  // the grass ends at the far plane: a straight horizon
+  return info;
+}
 
 }  // namespace
 

@@ -25,55 +25,6 @@ using namespace stencil;
 
 namespace {
 
-// Inside the cube's shadow, between the cube and the ground, looking down at the shadow's far
-// end on the ground and the lit ground around it.
-OrbitCamera eyeInShadow() {
-  OrbitCamera c;
-  c.target = {-1.6f, 0.0f, -1.8f};
-  c.distance = 1.95f;
-  c.azimuthDeg = 37.8f;
-  c.elevationDeg = 21.0f;
-  c.fovyDeg = 70.0f;
-  return c;
-}
-
-LessonInfo lessonInfo() {
-  LessonInfo info;
-  info.id = "07-shadow-volumes-invert";
-  info.title = "Shadow volumes with an inverted bit";
-  info.summary =
-      "The lit scene, then the shadow volume's faces inverting one stencil bit where they are in front\n"
-      "of the scene, then the scene without the light where the bit is set; where parity breaks.";
-  info.stencilBits = 1;  // one bit is all the method uses
-  info.options = {
-      {"casters", 'C', "which casters: 1 the cube, 2 the ball above it, 3 both (their volumes overlap)", 1,
-       3},
-      {"cutout", 'U', "a window frame with a hole instead of the cube", 0},
-      {"shadow", 'H', "draw the volumes at all (off: everything lit)", 1},
-      {"show", 'X', "draw the shadow volumes translucently over the result", 0},
-  };
-  info.variants = {
-      {"convex", "a convex cube: its silhouette bounds the volume exactly", {}},
-      {"cutout", "a window frame: its outline and its hole extruded", {{"cutout", 1}}},
-      {"show-volumes", "the convex cube with its volume drawn translucently", {{"show", 1}}},
-      {"overlap",
-       "two convex casters: where their volumes overlap the parity is even, the shadow lit",
-       {{"casters", 3}}},
-      {"eye-inside",
-       "the eye inside the cube's shadow: every crossing count is off by one, shadows invert",
-       {},
-       {},
-       eyeInShadow()},
-  };
-  info.shadows = true;
-  info.passes = {"lit", "volumes", "unlit", "show-volumes"};
-  info.camera.target = {-0.3f, 0.7f, -0.7f};
-  info.camera.distance = 7.5f;
-  info.camera.azimuthDeg = 35.0f;
-  info.camera.elevationDeg = 32.0f;
-  return info;
-}
-
 constexpr glm::vec4 kLight{1.6f, 5.0f, 1.2f, 1.0f};  // a point light, still; the casters turn
 constexpr glm::vec3 kAmbient{0.25f};
 constexpr glm::vec3 kLightColour{1.2f, 1.15f, 1.0f};
@@ -152,15 +103,6 @@ class InvertShadowVolumes final : public Lesson {
     }
     glDepthMask(GL_TRUE);
     glStencilMask(0xFF);
-  }
-
-  // Every visible object receives; the cut-out only casts, since one layer has no inside that
-  // a ray to the light could cross (its dark side counts as in its volume, the ray cast's as lit).
-  std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
-    if (!f.on("shadow")) return std::nullopt;
-    ShadowCheck check{{}, kLight, [](std::uint8_t s) { return (s & 0x01) == 0; }, true};
-    for (const Object& o : sceneAt(f)) check.objects.push_back({o.mesh, o.model, isCaster(o), !o.twoSided});
-    return check;
   }
 
  private:
@@ -253,7 +195,66 @@ class InvertShadowVolumes final : public Lesson {
   CasterEdges cubeCaster_, ballCaster_, frameCaster_;
   GpuTriangles volumeGpu_[2];
   std::vector<glm::mat4> volumeModels_;
+
+  // ---- test hooks ---------------------------------------------------------------------------------
+
+ public:
+  // Every visible object receives; the cut-out only casts, since one layer has no inside that
+  // a ray to the light could cross (its dark side counts as in its volume, the ray cast's as lit).
+  std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
+    if (!f.on("shadow")) return std::nullopt;
+    ShadowCheck check{{}, kLight, [](std::uint8_t s) { return (s & 0x01) == 0; }, true};
+    for (const Object& o : sceneAt(f)) check.objects.push_back({o.mesh, o.model, isCaster(o), !o.twoSided});
+    return check;
+  }
 };
+
+// ---- the lesson: options, variants, cameras ------------------------------------------------------
+
+// Inside the cube's shadow, between the cube and the ground, looking down at the shadow's far
+// end on the ground and the lit ground around it.
+OrbitCamera eyeInShadow() {
+  return {.target = {-1.6f, 0.0f, -1.8f},
+          .distance = 1.95f,
+          .azimuthDeg = 37.8f,
+          .elevationDeg = 21.0f,
+          .fovyDeg = 70.0f};
+}
+
+LessonInfo lessonInfo() {
+  LessonInfo info;
+  info.id = "07-shadow-volumes-invert";
+  info.title = "Shadow volumes with an inverted bit";
+  info.summary =
+      "The lit scene, then the shadow volume's faces inverting one stencil bit where they are in front\n"
+      "of the scene, then the scene without the light where the bit is set; where parity breaks.";
+  info.stencilBits = 1;  // one bit is all the method uses
+  info.options = {
+      {"casters", 'C', "which casters: 1 the cube, 2 the ball above it, 3 both (their volumes overlap)", 1,
+       3},
+      {"cutout", 'U', "a window frame with a hole instead of the cube", 0},
+      {"shadow", 'H', "draw the volumes at all (off: everything lit)", 1},
+      {"show", 'X', "draw the shadow volumes translucently over the result", 0},
+  };
+  info.variants = {
+      {"convex", "a convex cube: its silhouette bounds the volume exactly", {}},
+      {"cutout", "a window frame: its outline and its hole extruded", {{"cutout", 1}}},
+      {"show-volumes", "the convex cube with its volume drawn translucently", {{"show", 1}}},
+      {"overlap",
+       "two convex casters: where their volumes overlap the parity is even, the shadow lit",
+       {{"casters", 3}}},
+      {"eye-inside",
+       "the eye inside the cube's shadow: every crossing count is off by one, shadows invert",
+       {},
+       {},
+       eyeInShadow()},
+  };
+  info.shadows = true;
+  info.passes = {"lit", "volumes", "unlit", "show-volumes"};
+  info.camera = {
+      .target = {-0.3f, 0.7f, -0.7f}, .distance = 7.5f, .azimuthDeg = 35.0f, .elevationDeg = 32.0f};
+  return info;
+}
 
 }  // namespace
 

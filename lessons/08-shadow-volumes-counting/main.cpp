@@ -24,84 +24,6 @@ using namespace stencil;
 
 namespace {
 
-// Lesson 07's eye inside the cube's shadow.
-OrbitCamera eyeInShadow() {
-  OrbitCamera c;
-  c.target = {-1.6f, 0.0f, -1.8f};
-  c.distance = 1.95f;
-  c.azimuthDeg = 37.8f;
-  c.elevationDeg = 21.0f;
-  c.fovyDeg = 70.0f;
-  return c;
-}
-
-// Just outside the side of the cube's shadow, looking down along it, with a near plane far
-// enough out that it cuts through the volume's side face.
-OrbitCamera nearPlaneInVolume() {
-  OrbitCamera c;
-  c.target = {-0.82f, 0.0f, -0.62f};
-  c.distance = 1.5f;
-  c.azimuthDeg = -18.3f;
-  c.elevationDeg = 27.9f;
-  c.fovyDeg = 70.0f;
-  c.nearPlane = 1.0f;
-  return c;
-}
-
-LessonInfo lessonInfo() {
-  LessonInfo info;
-  info.id = "08-shadow-volumes-counting";
-  info.title = "Counting shadow volumes";
-  info.summary =
-      "Front faces of the volumes INCR, back faces DECR, a nonzero count is a shadow: overlapping\n"
-      "volumes add up, so every lit triangle may extrude its own; where the count still breaks.";
-  info.options = {
-      {"silhouette", 'G', "one volume per caster from its silhouette (off: one per lit triangle)", 0},
-      {"torus", 'T', "a torus instead of the cube: a caster whose volume overlaps itself", 0},
-      {"wrap", 'W', "INCR_WRAP and DECR_WRAP (off: saturating INCR and DECR)", 1},
-      {"back-first", 'B', "draw the back faces (DECR) before the front faces (INCR)", 0},
-      {"near-light", 'L', "the light just above the cube", 0},
-      {"extrusion", 'E', "how far the volumes reach: 0 to infinity (w = 0), else that many units", 0, 4},
-      {"shadow", 'H', "draw the volumes at all (off: everything lit)", 1},
-      {"show", 'X', "draw the shadow volumes translucently over the result", 0},
-  };
-  info.variants = {
-      {"counting", "two overlapping casters, a volume per lit triangle, counted", {}},
-      {"silhouette",
-       "the same with one volume per caster: the same shadow, fewer fragments",
-       {{"silhouette", 1}}},
-      {"torus", "a torus: its own volume overlaps itself, the count takes it", {{"torus", 1}}},
-      {"show-volumes", "the per-triangle volumes drawn translucently", {{"show", 1}}},
-      {"wrap-back-first",
-       "back faces first with wrapping operations: the count comes right",
-       {{"back-first", 1}}},
-      {"saturate-back-first",
-       "back faces first with saturating operations: DECR at zero is lost, false shadows",
-       {{"back-first", 1}, {"wrap", 0}}},
-      {"near-light", "the light just above the cube, volumes to infinity", {{"near-light", 1}}},
-      {"short-extrusion",
-       "the same light with volumes one unit long: they end above the ground, the shadow is lost",
-       {{"near-light", 1}, {"extrusion", 1}}},
-      {"eye-inside",
-       "the eye inside the cube's shadow: the count is off by one everywhere",
-       {},
-       {},
-       eyeInShadow()},
-      {"near-plane",
-       "the near plane cuts the cube's volume: the entries it clips away are not counted",
-       {},
-       {},
-       nearPlaneInVolume()},
-  };
-  info.shadows = true;
-  info.passes = {"lit", "front-faces", "back-faces", "unlit", "show-volumes"};
-  info.camera.target = {-0.3f, 0.7f, -0.7f};
-  info.camera.distance = 7.5f;
-  info.camera.azimuthDeg = 35.0f;
-  info.camera.elevationDeg = 32.0f;
-  return info;
-}
-
 constexpr glm::vec3 kAmbient{0.25f};
 constexpr glm::vec3 kLightColour{1.2f, 1.15f, 1.0f};
 
@@ -198,15 +120,6 @@ class CountingShadowVolumes final : public Lesson {
     glDepthMask(GL_TRUE);
   }
 
-  // Every visible object receives, the casters included (their dark sides lie in their own
-  // volume). A count of zero is lit.
-  std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
-    if (!f.on("shadow")) return std::nullopt;
-    ShadowCheck check{{}, lightAt(f), [](std::uint8_t s) { return s == 0; }, true};
-    for (const Object& o : sceneAt(f)) check.objects.push_back({o.mesh, o.model, isCaster(o), true});
-    return check;
-  }
-
  private:
   static glm::vec4 lightAt(const Frame& f) {
     return f.on("near-light") ? glm::vec4(0.5f, 2.9f, 0.4f, 1.0f) : glm::vec4(1.6f, 5.0f, 1.2f, 1.0f);
@@ -291,7 +204,93 @@ class CountingShadowVolumes final : public Lesson {
   CasterEdges cubeCaster_, torusCaster_, ballCaster_;
   GpuTriangles volumeGpu_[2];
   std::vector<glm::mat4> volumeModels_;
+
+  // ---- test hooks ---------------------------------------------------------------------------------
+
+ public:
+  // Every visible object receives, the casters included (their dark sides lie in their own
+  // volume). A count of zero is lit.
+  std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
+    if (!f.on("shadow")) return std::nullopt;
+    ShadowCheck check{{}, lightAt(f), [](std::uint8_t s) { return s == 0; }, true};
+    for (const Object& o : sceneAt(f)) check.objects.push_back({o.mesh, o.model, isCaster(o), true});
+    return check;
+  }
 };
+
+// ---- the lesson: options, variants, cameras ------------------------------------------------------
+
+// Lesson 07's eye inside the cube's shadow.
+OrbitCamera eyeInShadow() {
+  return {.target = {-1.6f, 0.0f, -1.8f},
+          .distance = 1.95f,
+          .azimuthDeg = 37.8f,
+          .elevationDeg = 21.0f,
+          .fovyDeg = 70.0f};
+}
+
+// Just outside the side of the cube's shadow, looking down along it, with a near plane far
+// enough out that it cuts through the volume's side face.
+OrbitCamera nearPlaneInVolume() {
+  return {.target = {-0.82f, 0.0f, -0.62f},
+          .distance = 1.5f,
+          .azimuthDeg = -18.3f,
+          .elevationDeg = 27.9f,
+          .fovyDeg = 70.0f,
+          .nearPlane = 1.0f};
+}
+
+LessonInfo lessonInfo() {
+  LessonInfo info;
+  info.id = "08-shadow-volumes-counting";
+  info.title = "Counting shadow volumes";
+  info.summary =
+      "Front faces of the volumes INCR, back faces DECR, a nonzero count is a shadow: overlapping\n"
+      "volumes add up, so every lit triangle may extrude its own; where the count still breaks.";
+  info.options = {
+      {"silhouette", 'G', "one volume per caster from its silhouette (off: one per lit triangle)", 0},
+      {"torus", 'T', "a torus instead of the cube: a caster whose volume overlaps itself", 0},
+      {"wrap", 'W', "INCR_WRAP and DECR_WRAP (off: saturating INCR and DECR)", 1},
+      {"back-first", 'B', "draw the back faces (DECR) before the front faces (INCR)", 0},
+      {"near-light", 'L', "the light just above the cube", 0},
+      {"extrusion", 'E', "how far the volumes reach: 0 to infinity (w = 0), else that many units", 0, 4},
+      {"shadow", 'H', "draw the volumes at all (off: everything lit)", 1},
+      {"show", 'X', "draw the shadow volumes translucently over the result", 0},
+  };
+  info.variants = {
+      {"counting", "two overlapping casters, a volume per lit triangle, counted", {}},
+      {"silhouette",
+       "the same with one volume per caster: the same shadow, fewer fragments",
+       {{"silhouette", 1}}},
+      {"torus", "a torus: its own volume overlaps itself, the count takes it", {{"torus", 1}}},
+      {"show-volumes", "the per-triangle volumes drawn translucently", {{"show", 1}}},
+      {"wrap-back-first",
+       "back faces first with wrapping operations: the count comes right",
+       {{"back-first", 1}}},
+      {"saturate-back-first",
+       "back faces first with saturating operations: DECR at zero is lost, false shadows",
+       {{"back-first", 1}, {"wrap", 0}}},
+      {"near-light", "the light just above the cube, volumes to infinity", {{"near-light", 1}}},
+      {"short-extrusion",
+       "the same light with volumes one unit long: they end above the ground, the shadow is lost",
+       {{"near-light", 1}, {"extrusion", 1}}},
+      {"eye-inside",
+       "the eye inside the cube's shadow: the count is off by one everywhere",
+       {},
+       {},
+       eyeInShadow()},
+      {"near-plane",
+       "the near plane cuts the cube's volume: the entries it clips away are not counted",
+       {},
+       {},
+       nearPlaneInVolume()},
+  };
+  info.shadows = true;
+  info.passes = {"lit", "front-faces", "back-faces", "unlit", "show-volumes"};
+  info.camera = {
+      .target = {-0.3f, 0.7f, -0.7f}, .distance = 7.5f, .azimuthDeg = 35.0f, .elevationDeg = 32.0f};
+  return info;
+}
 
 }  // namespace
 

@@ -38,100 +38,11 @@ using namespace stencil;
 
 namespace {
 
-LessonInfo lessonInfo() {
-  LessonInfo info;
-  info.id = "09-cutout-extrusion";
-  info.title = "Cut-out extrusion";
-  info.summary =
-      "A planar cut-out's shadow volume extruded on the CPU, by one projective matrix, and on the GPU\n"
-      "from doubled vertices; a complex object flattened into a cut-out; planar shadows mixed in.";
-  info.options = {
-      {"method", 'M',
-       "the cut-out's volume: 0 CPU each frame, 1 projective matrix on a static prism, 2 GPU doubled "
-       "vertices",
-       0, 2},
-      {"light", 'L',
-       "0 point light above, 1 directional, 2 point light close above the cut-out, 3 directional light\n"
-       "      parallel to the cut-out, 4 point light in the cut-out's plane",
-       0, 4},
-      {"distance", 'X', "CPU extrusion distance in tenths (0: to infinity, w = 0)", 0, 60},
-      {"logo", 'O', "the cut-out (a window lattice) above the scene", 1},
-      {"holes", 'N', "holes per row of the lattice", 3, 16, 1},
-      {"teapot", 'T',
-       "the teapot's own shadow: 0 none, 1 flattened into a cut-out silhouette, 2 planar (figure 14)", 0, 2},
-      {"sphere", 'Y', "a sphere instead of the teapot", 0},
-      {"slices", 'I', "the sphere's slices (stacks: half as many)", 24, 256, 3},
-      {"analytic", 'A', "--oracle judges against the true sphere, not its mesh", 0},
-      {"volumes", 'W', "draw the shadow volumes translucently", 0},
-      {"shadow", 'H', "shadows at all (off: everything lit)", 1},
-  };
-  info.variants = {
-      {"cpu", "the lattice's border extruded to infinity on the CPU each frame", {}},
-      {"matrix", "a static prism bent into the volume by one projective matrix", {{"method", 1}}},
-      {"gpu", "doubled vertices (w = 1, w = 0) extruded by a blended pair of matrices", {{"method", 2}}},
-      {"directional", "a directional light, extruded on the CPU", {{"light", 1}}},
-      {"directional-matrix",
-       "a directional light: the matrix can only push a finite reach",
-       {{"light", 1}, {"method", 1}}},
-      {"directional-gpu",
-       "a directional light on the GPU: every far vertex the same point at infinity",
-       {{"light", 1}, {"method", 2}}},
-      {"close-light", "a light just above the cut-out: the volume spreads almost flat", {{"light", 2}}},
-      {"close-light-short",
-       "the same light and a volume only one unit long: it ends in the air, the count is wrong",
-       {{"light", 2}, {"distance", 10}}},
-      {"parallel", "a directional light parallel to the cut-out: no volume, no shadow", {{"light", 3}}},
-      {"parallel-matrix",
-       "the same with the matrix: the five points are coplanar, no matrix",
-       {{"light", 3}, {"method", 1}}},
-      {"edge-on", "a point light in the cut-out's plane: edge-on, no shadow", {{"light", 4}}},
-      {"edge-on-gpu", "the same on the GPU", {{"light", 4}, {"method", 2}}},
-      {"flatten", "the teapot flattened into a cut-out silhouette above the floor", {{"teapot", 1}}},
-      {"figure-14",
-       "the logo's volume on the teapot, the teapot's planar shadow on the floor",
-       {{"teapot", 2}}},
-      {"sphere",
-       "a sphere of 24 slices flattened into a cut-out",
-       {{"logo", 0}, {"teapot", 1}, {"sphere", 1}}},
-      {"volumes", "the volumes drawn translucently over the result", {{"teapot", 1}, {"volumes", 1}}},
-  };
-  info.shadows = true;
-  info.passes = {"lit", "count", "unlit", "planar", "volumes"};
-  info.camera.distance = 7.5f;
-  info.camera.azimuthDeg = 35.0f;
-  info.camera.elevationDeg = 30.0f;
-  info.camera.target = {0.0f, 0.8f, 0.0f};
-  return info;
-}
-
 constexpr GLuint kCount = 0x7F;        // the shadow count, wrapping within the low seven bits
 constexpr GLint kGroundTag = 0x80;     // the top bit: visible ground, for the planar shadow
 constexpr float kFlatHeight = 0.2f;    // the plane the teapot is flattened onto, just above the floor
 constexpr float kMatrixReach = 60.0f;  // how far the matrix pushes away from a directional light
 constexpr glm::vec3 kAmbient{0.3f};
-
-// The meshes of one closed object as one mesh (they may intersect: the stencil counts layers).
-Mesh append(Mesh to, const Mesh& part, const glm::mat4& model) {
-  const Mesh t = transformed(part, model);
-  const auto base = static_cast<std::uint32_t>(to.positions.size());
-  to.positions.insert(to.positions.end(), t.positions.begin(), t.positions.end());
-  to.normals.insert(to.normals.end(), t.normals.begin(), t.normals.end());
-  for (const std::uint32_t i : t.indices) to.indices.push_back(base + i);
-  return to;
-}
-
-// A teapot from the shapes: a squat body, a spout, a handle, a lid and its knob.
-Mesh makeTeapot() {
-  using glm::rotate, glm::scale, glm::translate;
-  const glm::mat4 id(1.0f);
-  Mesh m = append({}, makeSphere(0.55f, 40, 20), scale(id, {1.0f, 0.8f, 1.0f}));
-  m = append(m, makeCone(0.14f, 0.75f, 24),
-             rotate(translate(id, {0.6f, 0.1f, 0}), glm::radians(-55.0f), {0, 0, 1}));
-  m = append(m, makeTorus(0.27f, 0.06f, 32, 12),
-             rotate(translate(id, {-0.55f, 0.05f, 0}), glm::radians(90.0f), {1, 0, 0}));
-  m = append(m, makeCylinder(0.26f, 0.1f, 32), translate(id, {0, 0.44f, 0}));
-  return append(m, makeSphere(0.08f, 16, 8), translate(id, {0, 0.54f, 0}));
-}
 
 // What one object needs for shadow volumes: welded positions and their edge adjacency.
 struct Caster {
@@ -141,6 +52,8 @@ struct Caster {
     adjacency = buildEdgeAdjacency(welded.indices, welded.positions.size());
   }
 };
+
+Mesh makeTeapot();  // the scene's teapot, built after the lesson
 
 class CutoutExtrusion final : public Lesson {
  public:
@@ -231,31 +144,6 @@ class CutoutExtrusion final : public Lesson {
       glDisable(GL_BLEND);
       f.pass("volumes");
     }
-  }
-
-  // The count's zero is a lit receiver. Which objects cast and receive follows the options: an
-  // object casts only where the lesson builds its shadow, and an object that casts its own
-  // shadow is not judged as a receiver (the lesson does not shadow it by itself).
-  std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
-    if (!f.on("shadow")) return std::nullopt;
-    const bool objectCasts = f.option("teapot") != kNone;
-    ShadowCheck check{{{&groundMesh_, glm::mat4(1), false, true}},
-                      lightAt(f),
-                      [](std::uint8_t s) { return (s & kCount) == 0; },
-                      true};
-    if (f.on("logo")) check.objects.push_back({&logo_->drawn, logoModel(f), true, false});
-    if (!f.on("sphere"))
-      check.objects.push_back({&teapot_.drawn, teapotModel(f), objectCasts, !objectCasts});
-    else if (f.on("analytic"))
-      check.objects.push_back(
-          {nullptr, glm::mat4(1), objectCasts, !objectCasts, glm::vec4(kSphereCentre, kSphereRadius)});
-    else
-      check.objects.push_back(
-          {&sphere_->drawn, glm::translate(glm::mat4(1), kSphereCentre), objectCasts, !objectCasts});
-    if (check.light.w != 0.0f)
-      check.objects.push_back(
-          {&markerMesh_, glm::translate(glm::mat4(1), glm::vec3(check.light)), false, false});
-    return check;
   }
 
  private:
@@ -467,7 +355,128 @@ class CutoutExtrusion final : public Lesson {
   glm::vec4 logoLight_{0.0f};
   glm::mat4 logoMatrix_{1.0f};
   bool logoEdgeOn_ = false;
+
+  // ---- test hooks ---------------------------------------------------------------------------------
+
+ public:
+  // The count's zero is a lit receiver. Which objects cast and receive follows the options: an
+  // object casts only where the lesson builds its shadow, and an object that casts its own
+  // shadow is not judged as a receiver (the lesson does not shadow it by itself).
+  std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
+    if (!f.on("shadow")) return std::nullopt;
+    const bool objectCasts = f.option("teapot") != kNone;
+    ShadowCheck check{{{&groundMesh_, glm::mat4(1), false, true}},
+                      lightAt(f),
+                      [](std::uint8_t s) { return (s & kCount) == 0; },
+                      true};
+    if (f.on("logo")) check.objects.push_back({&logo_->drawn, logoModel(f), true, false});
+    if (!f.on("sphere"))
+      check.objects.push_back({&teapot_.drawn, teapotModel(f), objectCasts, !objectCasts});
+    else if (f.on("analytic"))
+      check.objects.push_back(
+          {nullptr, glm::mat4(1), objectCasts, !objectCasts, glm::vec4(kSphereCentre, kSphereRadius)});
+    else
+      check.objects.push_back(
+          {&sphere_->drawn, glm::translate(glm::mat4(1), kSphereCentre), objectCasts, !objectCasts});
+    if (check.light.w != 0.0f)
+      check.objects.push_back(
+          {&markerMesh_, glm::translate(glm::mat4(1), glm::vec3(check.light)), false, false});
+    return check;
+  }
 };
+
+// ---- the teapot --------------------------------------------------------------------------------------
+
+// The meshes of one closed object as one mesh (they may intersect: the stencil counts layers).
+Mesh append(Mesh to, const Mesh& part, const glm::mat4& model) {
+  const Mesh t = transformed(part, model);
+  const auto base = static_cast<std::uint32_t>(to.positions.size());
+  to.positions.insert(to.positions.end(), t.positions.begin(), t.positions.end());
+  to.normals.insert(to.normals.end(), t.normals.begin(), t.normals.end());
+  for (const std::uint32_t i : t.indices) to.indices.push_back(base + i);
+  return to;
+}
+
+// A teapot from the shapes: a squat body, a spout, a handle, a lid and its knob.
+Mesh makeTeapot() {
+  using glm::rotate, glm::scale, glm::translate;
+  const glm::mat4 id(1.0f);
+  Mesh m = append({}, makeSphere(0.55f, 40, 20), scale(id, {1.0f, 0.8f, 1.0f}));
+  m = append(m, makeCone(0.14f, 0.75f, 24),
+             rotate(translate(id, {0.6f, 0.1f, 0}), glm::radians(-55.0f), {0, 0, 1}));
+  m = append(m, makeTorus(0.27f, 0.06f, 32, 12),
+             rotate(translate(id, {-0.55f, 0.05f, 0}), glm::radians(90.0f), {1, 0, 0}));
+  m = append(m, makeCylinder(0.26f, 0.1f, 32), translate(id, {0, 0.44f, 0}));
+  return append(m, makeSphere(0.08f, 16, 8), translate(id, {0, 0.54f, 0}));
+}
+
+// ---- the lesson: options, variants, camera -------------------------------------------------------
+
+LessonInfo lessonInfo() {
+  LessonInfo info;
+  info.id = "09-cutout-extrusion";
+  info.title = "Cut-out extrusion";
+  info.summary =
+      "A planar cut-out's shadow volume extruded on the CPU, by one projective matrix, and on the GPU\n"
+      "from doubled vertices; a complex object flattened into a cut-out; planar shadows mixed in.";
+  info.options = {
+      {"method", 'M',
+       "the cut-out's volume: 0 CPU each frame, 1 projective matrix on a static prism, 2 GPU doubled "
+       "vertices",
+       0, 2},
+      {"light", 'L',
+       "0 point light above, 1 directional, 2 point light close above the cut-out, 3 directional light\n"
+       "      parallel to the cut-out, 4 point light in the cut-out's plane",
+       0, 4},
+      {"distance", 'X', "CPU extrusion distance in tenths (0: to infinity, w = 0)", 0, 60},
+      {"logo", 'O', "the cut-out (a window lattice) above the scene", 1},
+      {"holes", 'N', "holes per row of the lattice", 3, 16, 1},
+      {"teapot", 'T',
+       "the teapot's own shadow: 0 none, 1 flattened into a cut-out silhouette, 2 planar (figure 14)", 0, 2},
+      {"sphere", 'Y', "a sphere instead of the teapot", 0},
+      {"slices", 'I', "the sphere's slices (stacks: half as many)", 24, 256, 3},
+      {"analytic", 'A', "--oracle judges against the true sphere, not its mesh", 0},
+      {"volumes", 'W', "draw the shadow volumes translucently", 0},
+      {"shadow", 'H', "shadows at all (off: everything lit)", 1},
+  };
+  info.variants = {
+      {"cpu", "the lattice's border extruded to infinity on the CPU each frame", {}},
+      {"matrix", "a static prism bent into the volume by one projective matrix", {{"method", 1}}},
+      {"gpu", "doubled vertices (w = 1, w = 0) extruded by a blended pair of matrices", {{"method", 2}}},
+      {"directional", "a directional light, extruded on the CPU", {{"light", 1}}},
+      {"directional-matrix",
+       "a directional light: the matrix can only push a finite reach",
+       {{"light", 1}, {"method", 1}}},
+      {"directional-gpu",
+       "a directional light on the GPU: every far vertex the same point at infinity",
+       {{"light", 1}, {"method", 2}}},
+      {"close-light", "a light just above the cut-out: the volume spreads almost flat", {{"light", 2}}},
+      {"close-light-short",
+       "the same light and a volume only one unit long: it ends in the air, the count is wrong",
+       {{"light", 2}, {"distance", 10}}},
+      {"parallel", "a directional light parallel to the cut-out: no volume, no shadow", {{"light", 3}}},
+      {"parallel-matrix",
+       "the same with the matrix: the five points are coplanar, no matrix",
+       {{"light", 3}, {"method", 1}}},
+      {"edge-on", "a point light in the cut-out's plane: edge-on, no shadow", {{"light", 4}}},
+      {"edge-on-gpu", "the same on the GPU", {{"light", 4}, {"method", 2}}},
+      {"flatten", "the teapot flattened into a cut-out silhouette above the floor", {{"teapot", 1}}},
+      {"figure-14",
+       "the logo's volume on the teapot, the teapot's planar shadow on the floor",
+       {{"teapot", 2}}},
+      {"sphere",
+       "a sphere of 24 slices flattened into a cut-out",
+       {{"logo", 0}, {"teapot", 1}, {"sphere", 1}}},
+      {"volumes", "the volumes drawn translucently over the result", {{"teapot", 1}, {"volumes", 1}}},
+  };
+  info.shadows = true;
+  info.passes = {"lit", "count", "unlit", "planar", "volumes"};
+  info.camera.distance = 7.5f;
+  info.camera.azimuthDeg = 35.0f;
+  info.camera.elevationDeg = 30.0f;
+  info.camera.target = {0.0f, 0.8f, 0.0f};
+  return info;
+}
 
 }  // namespace
 

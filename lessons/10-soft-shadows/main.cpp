@@ -51,140 +51,7 @@ namespace {
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 constexpr int kMaxLights = 1024;
 
-LessonInfo lessonInfo() {
-  LessonInfo info;
-  info.id = "10-soft-shadows";
-  info.title = "Soft shadows from light clusters";
-  info.summary =
-      "An area light sampled by N point lights, each with a hard shadow volume, each added at 1/N where\n"
-      "its shadow is not: Kilgard's eight stencil bits, where they fail, and a count per light in float.";
-  info.options = {
-      {"method", 'M',
-       "0 counting: per light a z-fail count in the whole stencil; 1 Kilgard: per light one stencil bit,\n"
-       "      inverted by its volumes (z-pass parity), eight lights to a stencil clear",
-       0, 1},
-      {"lights", 'N', "the point lights sampling the area light", 16, kMaxLights, 1},
-      {"pattern", 'T', "where the lights sit: 0 a grid, 1 jittered (one random point per cell), 2 Halton", 1,
-       2},
-      {"disk", 'D', "a disk light instead of the rectangle", 0},
-      {"size", 'I', "the light's width in tenths of a unit (depth: two thirds of it); 0 a point", 15, 30},
-      {"float", 'F',
-       "the accumulation target: 1 RGBA32F, 2 RGBA16F (an 11-bit mantissa: N additions near 1 each round),\n"
-       "      0 RGBA8 (each light's term rounded to 1/255)",
-       1, 2},
-      {"scale", 'W', "each light adds 1/N of the area light (off: the whole light each)", 1},
-      {"update-bit", 'U', "adding a light sets the stencil bit it tested: one addition per pixel per light",
-       1},
-      {"depth-equal", 'E', "light only the ambient pass's surfaces (depth EQUAL; off: no depth test)", 1},
-      {"blend", 'B', "add the lights (off: each replaces what is there)", 1},
-      {"bit-mask", 'K', "Kilgard: a light's volumes write only its own bit (off: all eight bits)", 1},
-      {"volume-colour", 'C', "the volumes also write colour (a state left on)", 0},
-      {"volume-depth", 'Z', "the volumes also write depth (a state left on)", 0},
-      {"reclear", 'J', "Kilgard past eight lights: clear the stencil before each group of eight", 1},
-      {"casters", 'A', "1 the slab, 2 a ball, 3 both (their volumes overlap)", 1, 3, 1},
-      {"mat", 'G', "a mat on the ground made of the ground's own triangles (equal depths)", 1},
-      {"visibility", 'Y',
-       "each light adds 1/N of white, unshaded, to the ground: the picture is the visible fraction", 0},
-      {"reference", 'Q', "the exact visible fraction (analytic; the slab only) instead of the lights", 0},
-      {"converged", '4',
-       "the reference ray cast instead, any casters: 2^converged stratified shadow rays per pixel\n"
-       "      (geometry/soft_shadow_reference.h; 0: the analytic one)",
-       0, 14},
-      {"progressive", 'O', "each frame adds N new samples to a running average", 0},
-      {"penumbra", 'X', "tint the penumbra: pixels some lights reach and some do not (float only)", 0},
-      {"light", 'L', "the light whose hard shadow the final stencil holds (the one --oracle checks)", 0,
-       kMaxLights - 1},
-      {"shadow", 'H', "shadows at all (off: every light reaches everything)", 1},
-      {"wedges", '1',
-       "penumbra wedges (counting only): the N-light loop only in the wedges' pixels, one light's hard\n"
-       "      shadow deciding everywhere else",
-       0},
-      {"show-wedges", '2', "tint the pixels the wedges mark (wedges only)", 0},
-      {"wedge-size", '3',
-       "the light the wedges are built from, in percent of the real one (test hook: under 100 the wedges\n"
-       "      miss part of the penumbra)",
-       100, 100},
-  };
-  info.variants = {
-      {"counting",
-       "sixteen jittered lights, each counted by z-fail in the whole stencil, float accumulation",
-       {}},
-      {"kilgard-8",
-       "Kilgard's recipe: eight lights on a grid, a stencil bit each, 1/8 each",
-       {{"method", 1}, {"lights", 8}, {"pattern", 0}}},
-      {"kilgard-no-update-bit",
-       "the tested bit not set when the light is added: the mat adds each light twice",
-       {{"method", 1}, {"lights", 8}, {"pattern", 0}, {"update-bit", 0}}},
-      {"kilgard-no-depth-equal",
-       "no depth test when the lights are added: hidden ground lights the slab",
-       {{"method", 1}, {"lights", 8}, {"pattern", 0}, {"depth-equal", 0}}},
-      {"kilgard-no-blend",
-       "each light replaces the last: only the eighth remains",
-       {{"method", 1}, {"lights", 8}, {"pattern", 0}, {"blend", 0}}},
-      {"kilgard-no-scale",
-       "each light at full intensity: eight times too bright",
-       {{"method", 1}, {"lights", 8}, {"pattern", 0}, {"scale", 0}}},
-      {"kilgard-no-bit-mask",
-       "each light's volumes invert all eight bits: the shadows mix",
-       {{"method", 1}, {"lights", 8}, {"pattern", 0}, {"bit-mask", 0}}},
-      {"kilgard-volume-colour",
-       "colour writes left on while the volumes are drawn",
-       {{"method", 1}, {"lights", 8}, {"pattern", 0}, {"volume-colour", 1}}},
-      {"kilgard-volume-depth",
-       "depth writes left on while the volumes are drawn: EQUAL fails behind them",
-       {{"method", 1}, {"lights", 8}, {"pattern", 0}, {"volume-depth", 1}}},
-      {"kilgard-overlap",
-       "two casters whose volumes overlap: parity lights the overlap",
-       {{"method", 1}, {"lights", 8}, {"pattern", 0}, {"casters", 3}, {"light", 7}}},
-      {"counting-overlap",
-       "the same two casters counted: the overlap stays dark",
-       {{"casters", 3}, {"light", 7}}},
-      {"kilgard-16",
-       "sixteen lights in two groups of eight, the stencil cleared between them",
-       {{"method", 1}, {"lights", 16}, {"pattern", 0}}},
-      {"kilgard-16-no-reclear",
-       "sixteen lights without the clear: lights 8-15 find their bits set, add nothing",
-       {{"method", 1}, {"lights", 16}, {"pattern", 0}, {"reclear", 0}, {"light", 8}}},
-      {"kilgard-8-8bit",
-       "Kilgard's eight lights added in an RGBA8 buffer: each 1/8 term rounded",
-       {{"method", 1}, {"lights", 8}, {"pattern", 0}, {"float", 0}}},
-      {"banding",
-       "four lights on a grid: five levels, bands across the penumbra",
-       {{"lights", 4}, {"pattern", 0}}},
-      {"many-8bit",
-       "256 lights in RGBA8: the terms below one level vanish",
-       {{"lights", 256}, {"float", 0}, {"pattern", 2}}},
-      {"many", "256 Halton lights in RGBA32F", {{"lights", 256}, {"pattern", 2}}},
-      {"many-16f",
-       "256 Halton lights in RGBA16F: rounding near 1 adds up over the lights",
-       {{"lights", 256}, {"pattern", 2}, {"float", 2}}},
-      {"disk", "a disk light, 64 Halton lights", {{"lights", 64}, {"pattern", 2}, {"disk", 1}}},
-      {"visibility",
-       "64 Halton lights, the visible fraction unshaded",
-       {{"lights", 64}, {"pattern", 2}, {"visibility", 1}}},
-      {"reference", "the exact visible fraction, analytic", {{"reference", 1}, {"visibility", 1}}},
-      {"converged",
-       "the visible fraction past the slab and the ball, ray cast with 1024 shadow rays per pixel",
-       {{"reference", 1}, {"visibility", 1}, {"converged", 10}, {"casters", 3}}},
-      {"penumbra", "the penumbra tinted", {{"penumbra", 1}}},
-      {"wedges",
-       "sixteen jittered lights, the N-light loop only inside the penumbra wedges",
-       {{"wedges", 1}}},
-      {"wedges-marked",
-       "the pixels the penumbra wedges mark, tinted: the only ones where N lights run",
-       {{"wedges", 1}, {"show-wedges", 1}, {"casters", 3}}},
-  };
-  info.shadows = true;
-  // Snapshots after the first light's (or first eight's) volumes and illumination, then after all
-  // the others: a pass per light would copy the frame once per light.
-  info.passes = {"ambient", "wedges", "volumes", "illumination", "other-lights", "resolve"};
-  info.camera.target = {0.2f, 0.3f, 0.3f};
-  info.camera.distance = 6.6f;
-  info.camera.azimuthDeg = 20.0f;
-  info.camera.elevationDeg = 52.0f;
-  info.camera.farPlane = kInfinity;  // z-fail's dark caps at infinity stay in the frustum
-  return info;
-}
+LessonInfo lessonInfo();  // the options, variants and camera, after the lesson
 
 // ---- the scene: an area light over a slab over the ground -----------------------------------
 
@@ -200,147 +67,13 @@ constexpr int kGroundDivisions = 12;
 constexpr glm::vec3 kAmbient{0.18f};
 constexpr glm::vec3 kLightColour{1.7f, 1.6f, 1.4f};
 
-AreaLight areaLight(const Frame& f) {
-  const float width = 0.1f * static_cast<float>(f.option("size"));
-  return {{0.0f, kLightHeight, 0.0f},
-          {width, width * 2.0f / 3.0f},
-          f.on("disk") ? LightShape::Disk : LightShape::Rectangle};
-}
-
-glm::mat4 slabModel() {
-  return glm::scale(glm::translate(glm::mat4(1.0f), kSlabCentre), {kSlabSide, kSlabThickness, kSlabSide});
-}
-
-// The ground's triangles whose centre lies in the mat's square, the same vertices: the mat's
-// depths are the ground's to the last bit, so depth EQUAL passes both.
-Mesh matFrom(const Mesh& ground) {
-  Mesh mat;
-  for (std::size_t t = 0; t + 2 < ground.indices.size(); t += 3) {
-    glm::vec3 c(0.0f);
-    for (int k = 0; k < 3; ++k) c += ground.positions[ground.indices[t + static_cast<std::size_t>(k)]];
-    c /= 3.0f;
-    if (c.x < 0.5f || c.x > 2.0f || c.z < -1.0f || c.z > 1.0f) continue;  // whole cells of 0.5
-    for (int k = 0; k < 3; ++k) {
-      const std::uint32_t i = ground.indices[t + static_cast<std::size_t>(k)];
-      mat.indices.push_back(static_cast<std::uint32_t>(mat.positions.size()));
-      mat.positions.push_back(ground.positions[i]);
-      mat.normals.push_back(ground.normals[i]);
-    }
-  }
-  return mat;
-}
-
-// ---- penumbra wedges (Assarsson and Akenine-Moller, "A Geometry-Based Soft Shadow Volume
-// Algorithm Using Graphics Hardware", SIGGRAPH 2003) --------------------------------------------
-
-constexpr float kWedgeFloor = -0.5f;  // wedges end below every receiver (the ground is y = 0)
-
-// The convex hull of a few points (a dozen: every plane through three of them with all the others
-// on one side holds a face), as triangles counter-clockwise seen from outside, w = 1. Points
-// within 1e-6 of the hull's size from a face's plane belong to that face. Empty when the points
-// span no volume.
-std::vector<glm::vec4> convexHull(const std::vector<glm::dvec3>& p) {
-  std::vector<glm::vec4> triangles;
-  double size = 0.0;
-  for (const glm::dvec3& q : p) size = std::max(size, glm::length(q - p[0]));
-  const double eps = 1e-6 * size;
-  std::vector<std::vector<std::size_t>> faces;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (std::size_t j = i + 1; j < p.size(); ++j)
-      for (std::size_t k = j + 1; k < p.size(); ++k) {
-        glm::dvec3 normal = glm::cross(p[j] - p[i], p[k] - p[i]);
-        const double length = glm::length(normal);
-        if (length <= 1e-12 * size * size) continue;
-        normal /= length;
-        bool below = true, above = true;
-        std::vector<std::size_t> on;
-        for (std::size_t m = 0; m < p.size(); ++m) {
-          const double d = glm::dot(normal, p[m] - p[i]);
-          if (d > eps) below = false;
-          if (d < -eps) above = false;
-          if (std::abs(d) <= eps) on.push_back(m);
-        }
-        if (below == above) continue;  // points on both sides, or all on the plane
-        if (!below) normal = -normal;  // outward: the others lie behind the face
-        if (std::find(faces.begin(), faces.end(), on) != faces.end()) continue;
-        faces.push_back(on);
-        // The face's points in order: a 2D hull (monotone chain) in the plane's (u, v), u x v the
-        // outward normal, so counter-clockwise there is counter-clockwise from outside.
-        const glm::dvec3 u = glm::normalize(p[on[1]] - p[on[0]]), v = glm::cross(normal, u);
-        std::vector<std::pair<glm::dvec2, std::size_t>> flat;
-        for (std::size_t m : on) flat.push_back({{glm::dot(p[m], u), glm::dot(p[m], v)}, m});
-        std::sort(flat.begin(), flat.end(), [](const auto& a, const auto& b) {
-          return a.first.x < b.first.x || (a.first.x == b.first.x && a.first.y < b.first.y);
-        });
-        auto turn = [](glm::dvec2 o, glm::dvec2 a, glm::dvec2 b) {
-          return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-        };
-        std::vector<std::size_t> ring;  // positions in flat
-        for (int pass = 0; pass < 2; ++pass) {
-          const std::size_t start = ring.size();
-          for (std::size_t t = 0; t < flat.size(); ++t) {
-            const std::size_t at = pass == 0 ? t : flat.size() - 1 - t;
-            while (ring.size() >= start + 2 && turn(flat[ring[ring.size() - 2]].first,
-                                                    flat[ring.back()].first, flat[at].first) <= eps * size)
-              ring.pop_back();
-            ring.push_back(at);
-          }
-          ring.pop_back();  // the chain's last point starts the other chain
-        }
-        for (std::size_t t = 1; t + 1 < ring.size(); ++t)
-          for (std::size_t corner : {ring[0], ring[t], ring[t + 1]})
-            triangles.push_back(glm::vec4(glm::vec3(p[flat[corner].second]), 1.0f));
-      }
-  return triangles;
-}
-
-// Every wedge of a caster (welded, world space): for each edge that may be a silhouette edge from
-// some point of the light's bounding rectangle, grown by `scale` (its two faces neither both
-// front-facing nor both back-facing from all four corners; a border edge always), the convex hull
-// of the edge and its endpoints extruded away from each corner down to y = kWedgeFloor. Every
-// shadow-volume side of the edge from a light point inside the rectangle lies in that hull (its
-// points are convex combinations of the corners' sides), so a receiver whose lights disagree lies
-// in some wedge. Appends the triangles (w = 1) and each wedge's (first vertex, vertex count).
-// Throws std::logic_error for an edge at or above the light (the lesson's scene has none).
+// The scene's pieces, the penumbra wedges and a framebuffer copy, defined after the lesson.
+AreaLight areaLight(const Frame& f);
+glm::mat4 slabModel();
+Mesh matFrom(const Mesh& ground);
 void penumbraWedges(const CasterEdges& caster, const AreaLight& area, float scale,
-                    std::vector<glm::vec4>& out, std::vector<std::pair<GLint, GLsizei>>& ranges) {
-  const glm::dvec2 half = 0.5 * static_cast<double>(scale) *
-                          glm::dvec2(area.shape == LightShape::Disk ? glm::vec2(area.size.x) : area.size);
-  const glm::dvec3 centre(area.centre);
-  const std::array<glm::dvec3, 4> corners{
-      centre + glm::dvec3(-half.x, 0.0, -half.y), centre + glm::dvec3(half.x, 0.0, -half.y),
-      centre + glm::dvec3(half.x, 0.0, half.y), centre + glm::dvec3(-half.x, 0.0, half.y)};
-  const std::vector<glm::vec3>& position = caster.welded.positions;
-  const std::vector<std::uint32_t>& index = caster.welded.indices;
-  auto faces = [&](std::int32_t face, const glm::dvec3& light) {
-    const glm::dvec3 a(position[index[3 * static_cast<std::size_t>(face)]]);
-    const glm::dvec3 b(position[index[3 * static_cast<std::size_t>(face) + 1]]);
-    const glm::dvec3 c(position[index[3 * static_cast<std::size_t>(face) + 2]]);
-    return glm::dot(glm::cross(b - a, c - a), light - a) > 0.0;
-  };
-  for (const Edge& e : caster.adjacency.edges) {
-    if (e.face0 >= 0 && e.face1 >= 0) {
-      bool allFront = true, allBack = true;
-      for (const glm::dvec3& c : corners) {
-        const bool f0 = faces(e.face0, c), f1 = faces(e.face1, c);
-        allFront = allFront && f0 && f1;
-        allBack = allBack && !f0 && !f1;
-      }
-      if (allFront || allBack) continue;  // never a silhouette edge
-    }
-    std::vector<glm::dvec3> points{glm::dvec3(position[e.v0]), glm::dvec3(position[e.v1])};
-    for (const glm::dvec3& c : corners)
-      for (std::size_t k = 0; k < 2; ++k) {
-        const glm::dvec3 q = points[k];
-        if (c.y - q.y < 1e-3) throw std::logic_error("a penumbra wedge's edge at or above the light");
-        points.push_back(q + (q.y - kWedgeFloor) / (c.y - q.y) * (q - c));
-      }
-    const std::vector<glm::vec4> hull = convexHull(points);
-    if (hull.empty()) continue;
-    ranges.push_back({static_cast<GLint>(out.size()), static_cast<GLsizei>(hull.size())});
-    out.insert(out.end(), hull.begin(), hull.end());
-  }
-}
+                    std::vector<glm::vec4>& out, std::vector<std::pair<GLint, GLsizei>>& ranges);
+void blit(GLuint from, GLuint to, glm::ivec2 size, GLbitfield mask);
 
 struct Object {
   const Mesh* mesh;
@@ -349,58 +82,6 @@ struct Object {
   glm::vec3 colour;
   bool caster;
 };
-
-// A colour texture (RGBA16F, RGBA8 or RGBA32F) with, optionally, a packed depth/stencil buffer of
-// the framework's format, so depth and stencil blit to it unchanged.
-class Target {
- public:
-  Target(glm::ivec2 size, GLenum colourFormat, bool depthStencil) : size_(size), format_(colourFormat) {
-    glGenFramebuffers(1, &fbo_);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    glGenTextures(1, &colour_);
-    glBindTexture(GL_TEXTURE_2D, colour_);
-    glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(colourFormat), size.x, size.y, 0, GL_RGBA, GL_FLOAT,
-                 nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_, 0);
-    if (depthStencil) {
-      glGenRenderbuffers(1, &depthStencil_);
-      glBindRenderbuffer(GL_RENDERBUFFER, depthStencil_);
-      glRenderbufferStorage(GL_RENDERBUFFER, depthStencilFormat(DepthFormat::Fixed24), size.x, size.y);
-      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depthStencil_);
-    }
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-      throw std::runtime_error("lesson 10's accumulation framebuffer is incomplete");
-  }
-  ~Target() {
-    glDeleteFramebuffers(1, &fbo_);
-    glDeleteTextures(1, &colour_);
-    if (depthStencil_) glDeleteRenderbuffers(1, &depthStencil_);
-  }
-  Target(const Target&) = delete;
-  Target& operator=(const Target&) = delete;
-
-  bool fits(glm::ivec2 size, GLenum format) const { return size == size_ && format == format_; }
-  void bind() const {
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    glViewport(0, 0, size_.x, size_.y);
-  }
-  GLuint fbo() const { return fbo_; }
-  GLuint colour() const { return colour_; }
-
- private:
-  glm::ivec2 size_;
-  GLenum format_;
-  GLuint fbo_ = 0, colour_ = 0, depthStencil_ = 0;
-};
-
-// Copies what `mask` names from one framebuffer to another of the same size.
-void blit(GLuint from, GLuint to, glm::ivec2 size, GLbitfield mask) {
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, from);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
-  glBlitFramebuffer(0, 0, size.x, size.y, 0, 0, size.x, size.y, mask, GL_NEAREST);
-}
 
 // ---- the lesson -------------------------------------------------------------------------------
 
@@ -537,24 +218,9 @@ class SoftShadows final : public Lesson {
     f.pass("resolve");
   }
 
-  // The checked light's stencil against a ray cast from that light: counting keeps its count
-  // (0 lit), Kilgard its bit.
-  std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
-    if (!f.on("shadow") || f.on("reference") || samples_.empty()) return std::nullopt;
-    const bool kilgard = f.option("method") == 1;
-    const std::uint8_t bit = static_cast<std::uint8_t>(1u << (checked_ % 8));
-    // With the wedges the saved stencil also holds the wedges' bit; the count is in the low bits.
-    const auto countMask = static_cast<std::uint8_t>(f.on("wedges") ? kCountBits : 0xFFu);
-    ShadowCheck check{
-        {},
-        samples_[static_cast<std::size_t>(checked_)],
-        [kilgard, bit, countMask](std::uint8_t s) { return kilgard ? (s & bit) == 0 : (s & countMask) == 0; },
-        true};
-    for (const Object& o : sceneOf(f)) check.objects.push_back({o.mesh, o.model, o.caster, true});
-    return check;
-  }
-
  private:
+  class Target;  // a colour texture with the framework's depth and stencil, defined below
+
   std::vector<Object> sceneOf(const Frame& f) const {
     std::vector<Object> scene;
     scene.push_back({&groundMesh_, &ground_, glm::mat4(1.0f), {0.75f, 0.74f, 0.7f}, false});
@@ -1021,6 +687,54 @@ class SoftShadows final : public Lesson {
   // wrapping modulo 16 on the way), a wedge's z-fail parity, the wedges' union, the added bit.
   static constexpr GLuint kCountBits = 0x0F, kTempBit = 0x20, kWedgeBit = 0x40, kAddedBit = 0x80;
 
+  // ---- the targets ------------------------------------------------------------------------------
+
+  // A colour texture (RGBA16F, RGBA8 or RGBA32F) with, optionally, a packed depth/stencil buffer of
+  // the framework's format, so depth and stencil blit to it unchanged.
+  class Target {
+   public:
+    Target(glm::ivec2 size, GLenum colourFormat, bool depthStencil) : size_(size), format_(colourFormat) {
+      glGenFramebuffers(1, &fbo_);
+      glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+      glGenTextures(1, &colour_);
+      glBindTexture(GL_TEXTURE_2D, colour_);
+      glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(colourFormat), size.x, size.y, 0, GL_RGBA, GL_FLOAT,
+                   nullptr);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_, 0);
+      if (depthStencil) {
+        glGenRenderbuffers(1, &depthStencil_);
+        glBindRenderbuffer(GL_RENDERBUFFER, depthStencil_);
+        glRenderbufferStorage(GL_RENDERBUFFER, depthStencilFormat(DepthFormat::Fixed24), size.x, size.y);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                                  depthStencil_);
+      }
+      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("lesson 10's accumulation framebuffer is incomplete");
+    }
+    ~Target() {
+      glDeleteFramebuffers(1, &fbo_);
+      glDeleteTextures(1, &colour_);
+      if (depthStencil_) glDeleteRenderbuffers(1, &depthStencil_);
+    }
+    Target(const Target&) = delete;
+    Target& operator=(const Target&) = delete;
+
+    bool fits(glm::ivec2 size, GLenum format) const { return size == size_ && format == format_; }
+    void bind() const {
+      glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+      glViewport(0, 0, size_.x, size_.y);
+    }
+    GLuint fbo() const { return fbo_; }
+    GLuint colour() const { return colour_; }
+
+   private:
+    glm::ivec2 size_;
+    GLenum format_;
+    GLuint fbo_ = 0, colour_ = 0, depthStencil_ = 0;
+  };
+
   Program light_, flat_, volume_, resolve_, lights_;
   GLuint lightsTexture_ = 0;
   Mesh groundMesh_, matMesh_, slabMesh_, ballMesh_;
@@ -1034,7 +748,315 @@ class SoftShadows final : public Lesson {
   int checked_ = 0;
   int round_ = 0;
   std::string lastKey_;
+
+  // ---- test hooks ---------------------------------------------------------------------------------
+
+ public:
+  // The checked light's stencil against a ray cast from that light: counting keeps its count
+  // (0 lit), Kilgard its bit.
+  std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
+    if (!f.on("shadow") || f.on("reference") || samples_.empty()) return std::nullopt;
+    const bool kilgard = f.option("method") == 1;
+    const std::uint8_t bit = static_cast<std::uint8_t>(1u << (checked_ % 8));
+    // With the wedges the saved stencil also holds the wedges' bit; the count is in the low bits.
+    const auto countMask = static_cast<std::uint8_t>(f.on("wedges") ? kCountBits : 0xFFu);
+    ShadowCheck check{
+        {},
+        samples_[static_cast<std::size_t>(checked_)],
+        [kilgard, bit, countMask](std::uint8_t s) { return kilgard ? (s & bit) == 0 : (s & countMask) == 0; },
+        true};
+    for (const Object& o : sceneOf(f)) check.objects.push_back({o.mesh, o.model, o.caster, true});
+    return check;
+  }
 };
+
+// ---- the scene's pieces ----------------------------------------------------------------------------
+
+AreaLight areaLight(const Frame& f) {
+  const float width = 0.1f * static_cast<float>(f.option("size"));
+  return {{0.0f, kLightHeight, 0.0f},
+          {width, width * 2.0f / 3.0f},
+          f.on("disk") ? LightShape::Disk : LightShape::Rectangle};
+}
+
+glm::mat4 slabModel() {
+  return glm::scale(glm::translate(glm::mat4(1.0f), kSlabCentre), {kSlabSide, kSlabThickness, kSlabSide});
+}
+
+// The ground's triangles whose centre lies in the mat's square, the same vertices: the mat's
+// depths are the ground's to the last bit, so depth EQUAL passes both.
+Mesh matFrom(const Mesh& ground) {
+  Mesh mat;
+  for (std::size_t t = 0; t + 2 < ground.indices.size(); t += 3) {
+    glm::vec3 c(0.0f);
+    for (int k = 0; k < 3; ++k) c += ground.positions[ground.indices[t + static_cast<std::size_t>(k)]];
+    c /= 3.0f;
+    if (c.x < 0.5f || c.x > 2.0f || c.z < -1.0f || c.z > 1.0f) continue;  // whole cells of 0.5
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t i = ground.indices[t + static_cast<std::size_t>(k)];
+      mat.indices.push_back(static_cast<std::uint32_t>(mat.positions.size()));
+      mat.positions.push_back(ground.positions[i]);
+      mat.normals.push_back(ground.normals[i]);
+    }
+  }
+  return mat;
+}
+
+// ---- penumbra wedges (Assarsson and Akenine-Moller, "A Geometry-Based Soft Shadow Volume
+// Algorithm Using Graphics Hardware", SIGGRAPH 2003) --------------------------------------------
+
+constexpr float kWedgeFloor = -0.5f;  // wedges end below every receiver (the ground is y = 0)
+
+// The convex hull of a few points (a dozen: every plane through three of them with all the others
+// on one side holds a face), as triangles counter-clockwise seen from outside, w = 1. Points
+// within 1e-6 of the hull's size from a face's plane belong to that face. Empty when the points
+// span no volume.
+std::vector<glm::vec4> convexHull(const std::vector<glm::dvec3>& p) {
+  std::vector<glm::vec4> triangles;
+  double size = 0.0;
+  for (const glm::dvec3& q : p) size = std::max(size, glm::length(q - p[0]));
+  const double eps = 1e-6 * size;
+  std::vector<std::vector<std::size_t>> faces;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = i + 1; j < p.size(); ++j)
+      for (std::size_t k = j + 1; k < p.size(); ++k) {
+        glm::dvec3 normal = glm::cross(p[j] - p[i], p[k] - p[i]);
+        const double length = glm::length(normal);
+        if (length <= 1e-12 * size * size) continue;
+        normal /= length;
+        bool below = true, above = true;
+        std::vector<std::size_t> on;
+        for (std::size_t m = 0; m < p.size(); ++m) {
+          const double d = glm::dot(normal, p[m] - p[i]);
+          if (d > eps) below = false;
+          if (d < -eps) above = false;
+          if (std::abs(d) <= eps) on.push_back(m);
+        }
+        if (below == above) continue;  // points on both sides, or all on the plane
+        if (!below) normal = -normal;  // outward: the others lie behind the face
+        if (std::find(faces.begin(), faces.end(), on) != faces.end()) continue;
+        faces.push_back(on);
+        // The face's points in order: a 2D hull (monotone chain) in the plane's (u, v), u x v the
+        // outward normal, so counter-clockwise there is counter-clockwise from outside.
+        const glm::dvec3 u = glm::normalize(p[on[1]] - p[on[0]]), v = glm::cross(normal, u);
+        std::vector<std::pair<glm::dvec2, std::size_t>> flat;
+        for (std::size_t m : on) flat.push_back({{glm::dot(p[m], u), glm::dot(p[m], v)}, m});
+        std::sort(flat.begin(), flat.end(), [](const auto& a, const auto& b) {
+          return a.first.x < b.first.x || (a.first.x == b.first.x && a.first.y < b.first.y);
+        });
+        auto turn = [](glm::dvec2 o, glm::dvec2 a, glm::dvec2 b) {
+          return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+        };
+        std::vector<std::size_t> ring;  // positions in flat
+        for (int pass = 0; pass < 2; ++pass) {
+          const std::size_t start = ring.size();
+          for (std::size_t t = 0; t < flat.size(); ++t) {
+            const std::size_t at = pass == 0 ? t : flat.size() - 1 - t;
+            while (ring.size() >= start + 2 && turn(flat[ring[ring.size() - 2]].first,
+                                                    flat[ring.back()].first, flat[at].first) <= eps * size)
+              ring.pop_back();
+            ring.push_back(at);
+          }
+          ring.pop_back();  // the chain's last point starts the other chain
+        }
+        for (std::size_t t = 1; t + 1 < ring.size(); ++t)
+          for (std::size_t corner : {ring[0], ring[t], ring[t + 1]})
+            triangles.push_back(glm::vec4(glm::vec3(p[flat[corner].second]), 1.0f));
+      }
+  return triangles;
+}
+
+// Every wedge of a caster (welded, world space): for each edge that may be a silhouette edge from
+// some point of the light's bounding rectangle, grown by `scale` (its two faces neither both
+// front-facing nor both back-facing from all four corners; a border edge always), the convex hull
+// of the edge and its endpoints extruded away from each corner down to y = kWedgeFloor. Every
+// shadow-volume side of the edge from a light point inside the rectangle lies in that hull (its
+// points are convex combinations of the corners' sides), so a receiver whose lights disagree lies
+// in some wedge. Appends the triangles (w = 1) and each wedge's (first vertex, vertex count).
+// Throws std::logic_error for an edge at or above the light (the lesson's scene has none).
+void penumbraWedges(const CasterEdges& caster, const AreaLight& area, float scale,
+                    std::vector<glm::vec4>& out, std::vector<std::pair<GLint, GLsizei>>& ranges) {
+  const glm::dvec2 half = 0.5 * static_cast<double>(scale) *
+                          glm::dvec2(area.shape == LightShape::Disk ? glm::vec2(area.size.x) : area.size);
+  const glm::dvec3 centre(area.centre);
+  const std::array<glm::dvec3, 4> corners{
+      centre + glm::dvec3(-half.x, 0.0, -half.y), centre + glm::dvec3(half.x, 0.0, -half.y),
+      centre + glm::dvec3(half.x, 0.0, half.y), centre + glm::dvec3(-half.x, 0.0, half.y)};
+  const std::vector<glm::vec3>& position = caster.welded.positions;
+  const std::vector<std::uint32_t>& index = caster.welded.indices;
+  auto faces = [&](std::int32_t face, const glm::dvec3& light) {
+    const glm::dvec3 a(position[index[3 * static_cast<std::size_t>(face)]]);
+    const glm::dvec3 b(position[index[3 * static_cast<std::size_t>(face) + 1]]);
+    const glm::dvec3 c(position[index[3 * static_cast<std::size_t>(face) + 2]]);
+    return glm::dot(glm::cross(b - a, c - a), light - a) > 0.0;
+  };
+  for (const Edge& e : caster.adjacency.edges) {
+    if (e.face0 >= 0 && e.face1 >= 0) {
+      bool allFront = true, allBack = true;
+      for (const glm::dvec3& c : corners) {
+        const bool f0 = faces(e.face0, c), f1 = faces(e.face1, c);
+        allFront = allFront && f0 && f1;
+        allBack = allBack && !f0 && !f1;
+      }
+      if (allFront || allBack) continue;  // never a silhouette edge
+    }
+    std::vector<glm::dvec3> points{glm::dvec3(position[e.v0]), glm::dvec3(position[e.v1])};
+    for (const glm::dvec3& c : corners)
+      for (std::size_t k = 0; k < 2; ++k) {
+        const glm::dvec3 q = points[k];
+        if (c.y - q.y < 1e-3) throw std::logic_error("a penumbra wedge's edge at or above the light");
+        points.push_back(q + (q.y - kWedgeFloor) / (c.y - q.y) * (q - c));
+      }
+    const std::vector<glm::vec4> hull = convexHull(points);
+    if (hull.empty()) continue;
+    ranges.push_back({static_cast<GLint>(out.size()), static_cast<GLsizei>(hull.size())});
+    out.insert(out.end(), hull.begin(), hull.end());
+  }
+}
+
+// Copies what `mask` names from one framebuffer to another of the same size.
+void blit(GLuint from, GLuint to, glm::ivec2 size, GLbitfield mask) {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, from);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
+  glBlitFramebuffer(0, 0, size.x, size.y, 0, 0, size.x, size.y, mask, GL_NEAREST);
+}
+
+// ---- the lesson: options, variants, camera -------------------------------------------------------
+
+LessonInfo lessonInfo() {
+  LessonInfo info;
+  info.id = "10-soft-shadows";
+  info.title = "Soft shadows from light clusters";
+  info.summary =
+      "An area light sampled by N point lights, each with a hard shadow volume, each added at 1/N where\n"
+      "its shadow is not: Kilgard's eight stencil bits, where they fail, and a count per light in float.";
+  info.options = {
+      {"method", 'M',
+       "0 counting: per light a z-fail count in the whole stencil; 1 Kilgard: per light one stencil bit,\n"
+       "      inverted by its volumes (z-pass parity), eight lights to a stencil clear",
+       0, 1},
+      {"lights", 'N', "the point lights sampling the area light", 16, kMaxLights, 1},
+      {"pattern", 'T', "where the lights sit: 0 a grid, 1 jittered (one random point per cell), 2 Halton", 1,
+       2},
+      {"disk", 'D', "a disk light instead of the rectangle", 0},
+      {"size", 'I', "the light's width in tenths of a unit (depth: two thirds of it); 0 a point", 15, 30},
+      {"float", 'F',
+       "the accumulation target: 1 RGBA32F, 2 RGBA16F (an 11-bit mantissa: N additions near 1 each round),\n"
+       "      0 RGBA8 (each light's term rounded to 1/255)",
+       1, 2},
+      {"scale", 'W', "each light adds 1/N of the area light (off: the whole light each)", 1},
+      {"update-bit", 'U', "adding a light sets the stencil bit it tested: one addition per pixel per light",
+       1},
+      {"depth-equal", 'E', "light only the ambient pass's surfaces (depth EQUAL; off: no depth test)", 1},
+      {"blend", 'B', "add the lights (off: each replaces what is there)", 1},
+      {"bit-mask", 'K', "Kilgard: a light's volumes write only its own bit (off: all eight bits)", 1},
+      {"volume-colour", 'C', "the volumes also write colour (a state left on)", 0},
+      {"volume-depth", 'Z', "the volumes also write depth (a state left on)", 0},
+      {"reclear", 'J', "Kilgard past eight lights: clear the stencil before each group of eight", 1},
+      {"casters", 'A', "1 the slab, 2 a ball, 3 both (their volumes overlap)", 1, 3, 1},
+      {"mat", 'G', "a mat on the ground made of the ground's own triangles (equal depths)", 1},
+      {"visibility", 'Y',
+       "each light adds 1/N of white, unshaded, to the ground: the picture is the visible fraction", 0},
+      {"reference", 'Q', "the exact visible fraction (analytic; the slab only) instead of the lights", 0},
+      {"converged", '4',
+       "the reference ray cast instead, any casters: 2^converged stratified shadow rays per pixel\n"
+       "      (geometry/soft_shadow_reference.h; 0: the analytic one)",
+       0, 14},
+      {"progressive", 'O', "each frame adds N new samples to a running average", 0},
+      {"penumbra", 'X', "tint the penumbra: pixels some lights reach and some do not (float only)", 0},
+      {"light", 'L', "the light whose hard shadow the final stencil holds (the one --oracle checks)", 0,
+       kMaxLights - 1},
+      {"shadow", 'H', "shadows at all (off: every light reaches everything)", 1},
+      {"wedges", '1',
+       "penumbra wedges (counting only): the N-light loop only in the wedges' pixels, one light's hard\n"
+       "      shadow deciding everywhere else",
+       0},
+      {"show-wedges", '2', "tint the pixels the wedges mark (wedges only)", 0},
+      {"wedge-size", '3',
+       "the light the wedges are built from, in percent of the real one (test hook: under 100 the wedges\n"
+       "      miss part of the penumbra)",
+       100, 100},
+  };
+  info.variants = {
+      {"counting",
+       "sixteen jittered lights, each counted by z-fail in the whole stencil, float accumulation",
+       {}},
+      {"kilgard-8",
+       "Kilgard's recipe: eight lights on a grid, a stencil bit each, 1/8 each",
+       {{"method", 1}, {"lights", 8}, {"pattern", 0}}},
+      {"kilgard-no-update-bit",
+       "the tested bit not set when the light is added: the mat adds each light twice",
+       {{"method", 1}, {"lights", 8}, {"pattern", 0}, {"update-bit", 0}}},
+      {"kilgard-no-depth-equal",
+       "no depth test when the lights are added: hidden ground lights the slab",
+       {{"method", 1}, {"lights", 8}, {"pattern", 0}, {"depth-equal", 0}}},
+      {"kilgard-no-blend",
+       "each light replaces the last: only the eighth remains",
+       {{"method", 1}, {"lights", 8}, {"pattern", 0}, {"blend", 0}}},
+      {"kilgard-no-scale",
+       "each light at full intensity: eight times too bright",
+       {{"method", 1}, {"lights", 8}, {"pattern", 0}, {"scale", 0}}},
+      {"kilgard-no-bit-mask",
+       "each light's volumes invert all eight bits: the shadows mix",
+       {{"method", 1}, {"lights", 8}, {"pattern", 0}, {"bit-mask", 0}}},
+      {"kilgard-volume-colour",
+       "colour writes left on while the volumes are drawn",
+       {{"method", 1}, {"lights", 8}, {"pattern", 0}, {"volume-colour", 1}}},
+      {"kilgard-volume-depth",
+       "depth writes left on while the volumes are drawn: EQUAL fails behind them",
+       {{"method", 1}, {"lights", 8}, {"pattern", 0}, {"volume-depth", 1}}},
+      {"kilgard-overlap",
+       "two casters whose volumes overlap: parity lights the overlap",
+       {{"method", 1}, {"lights", 8}, {"pattern", 0}, {"casters", 3}, {"light", 7}}},
+      {"counting-overlap",
+       "the same two casters counted: the overlap stays dark",
+       {{"casters", 3}, {"light", 7}}},
+      {"kilgard-16",
+       "sixteen lights in two groups of eight, the stencil cleared between them",
+       {{"method", 1}, {"lights", 16}, {"pattern", 0}}},
+      {"kilgard-16-no-reclear",
+       "sixteen lights without the clear: lights 8-15 find their bits set, add nothing",
+       {{"method", 1}, {"lights", 16}, {"pattern", 0}, {"reclear", 0}, {"light", 8}}},
+      {"kilgard-8-8bit",
+       "Kilgard's eight lights added in an RGBA8 buffer: each 1/8 term rounded",
+       {{"method", 1}, {"lights", 8}, {"pattern", 0}, {"float", 0}}},
+      {"banding",
+       "four lights on a grid: five levels, bands across the penumbra",
+       {{"lights", 4}, {"pattern", 0}}},
+      {"many-8bit",
+       "256 lights in RGBA8: the terms below one level vanish",
+       {{"lights", 256}, {"float", 0}, {"pattern", 2}}},
+      {"many", "256 Halton lights in RGBA32F", {{"lights", 256}, {"pattern", 2}}},
+      {"many-16f",
+       "256 Halton lights in RGBA16F: rounding near 1 adds up over the lights",
+       {{"lights", 256}, {"pattern", 2}, {"float", 2}}},
+      {"disk", "a disk light, 64 Halton lights", {{"lights", 64}, {"pattern", 2}, {"disk", 1}}},
+      {"visibility",
+       "64 Halton lights, the visible fraction unshaded",
+       {{"lights", 64}, {"pattern", 2}, {"visibility", 1}}},
+      {"reference", "the exact visible fraction, analytic", {{"reference", 1}, {"visibility", 1}}},
+      {"converged",
+       "the visible fraction past the slab and the ball, ray cast with 1024 shadow rays per pixel",
+       {{"reference", 1}, {"visibility", 1}, {"converged", 10}, {"casters", 3}}},
+      {"penumbra", "the penumbra tinted", {{"penumbra", 1}}},
+      {"wedges",
+       "sixteen jittered lights, the N-light loop only inside the penumbra wedges",
+       {{"wedges", 1}}},
+      {"wedges-marked",
+       "the pixels the penumbra wedges mark, tinted: the only ones where N lights run",
+       {{"wedges", 1}, {"show-wedges", 1}, {"casters", 3}}},
+  };
+  info.shadows = true;
+  // Snapshots after the first light's (or first eight's) volumes and illumination, then after all
+  // the others: a pass per light would copy the frame once per light.
+  info.passes = {"ambient", "wedges", "volumes", "illumination", "other-lights", "resolve"};
+  info.camera.target = {0.2f, 0.3f, 0.3f};
+  info.camera.distance = 6.6f;
+  info.camera.azimuthDeg = 20.0f;
+  info.camera.elevationDeg = 52.0f;
+  info.camera.farPlane = kInfinity;  // z-fail's dark caps at infinity stay in the frustum
+  return info;
+}
 
 }  // namespace
 

@@ -43,88 +43,6 @@ namespace {
 
 constexpr int kWhole = 0, kPieces = 1, kExtrude = 2, kScreen = 3;  // the "method" option
 
-LessonInfo lessonInfo() {
-  LessonInfo info;
-  info.id = "11-halo";
-  info.title = "The magic halo";
-  info.summary =
-      "A glow around an object that never covers it: the object grown and blended where its stencil tag is\n"
-      "absent, INVERT so each pixel blends once; one bit beside a reflection's and a shadow's on one floor.";
-  info.options = {
-      {"method", 'M',
-       "how the object grows: 0 the whole object scaled about its\n"
-       "      centre (the paper), 1 each convex piece grown about its own\n"
-       "      centre (the paper's fix), 2 pushed along its normals, 3 its\n"
-       "      outline moved k pixels every way (screen space: a draw per\n"
-       "      offset, the cost grows with the square of the height)",
-       kPieces, 3},
-      {"stencil", 'T', "tag the object and draw the halo only where the tag is absent", 1},
-      {"invert", 'I', "INVERT the halo's bit as each pixel blends, so no pixel blends twice", 1},
-      {"depth", 'Z', "the halo at the object's own depth (0: at the grown shell's, nearer)", 1},
-      {"floor", 'F', "over the visible floor (the reflection's bit) the halo skips the depth test", 1},
-      {"occluder", 'O', "a rail just in front of the figure", 0},
-      {"ball", 'B', "a second haloed object, its own bit: a ball in front of the figure's arm", 0},
-      {"shared-bit", 'H', "the ball's halo in the figure's bit (one bit for two halos)", 0},
-      {"reflect", 'E', "the floor's reflection", 1},
-      {"shadow", 'D', "the planar shadow on the floor", 1},
-      {"halo", 'G', "draw the halo at all (off: the tests' reference)", 1},
-      {"show", 'X',
-       "0 the shaded frame; 1 the blend counts: the same passes in flat\n"
-       "      colours, the figure blue, each blend of the figure's halo adding\n"
-       "      127 to red (twice 254), the ball's to green (--stats: measures)",
-       0},
-  };
-  info.variants = {
-      {"recipe",
-       "figure 17: the halo (a piece at a time), the reflection and the shadow share the stencil",
-       {}},
-      {"no-stencil",
-       "the halo without the stencil: the figure covered in yellow",
-       {{"stencil", 0}, {"depth", 0}}},
-      {"no-invert",
-       "the stencil tag but KEEP: where the pieces' shells overlap, pixels blend twice",
-       {{"invert", 0}}},
-      {"whole-object",
-       "the paper's recipe on a concave figure: scaled about its centre, an uneven ring",
-       {{"method", kWhole}}},
-      {"occluder",
-       "a rail just in front: the grown shell is nearer than the rail and paints over it",
-       {{"occluder", 1}, {"depth", 0}}},
-      {"occluder-fixed", "the shell at the figure's own depth: the rail hides the halo", {{"occluder", 1}}},
-      {"floor-cut",
-       "the shell below the floor fails the depth test: the ring is cut at the feet",
-       {{"floor", 0}}},
-      {"two-halos",
-       "a ball in front of the figure, one bit each: both halos blend once, also over each other",
-       {{"ball", 1}}},
-      {"two-halos-one-bit",
-       "both halos in one bit: the first halo's INVERT and tag cut the second",
-       {{"ball", 1}, {"shared-bit", 1}}},
-      {"extrude",
-       "engines: the surface pushed along its smoothed normals, an even width in world units",
-       {{"method", kExtrude}}},
-      {"screen",
-       "engines: the outline dilated by k pixels, the figure drawn shifted every way",
-       {{"method", kScreen}}},
-      {"counts", "the recipe's blend counts: every halo pixel blended once", {{"show", 1}}},
-      {"counts-no-invert",
-       "the blend counts without INVERT: the overlaps blended twice",
-       {{"show", 1}, {"invert", 0}}},
-      {"counts-two-halos",
-       "the blend counts of two halos, a bit each: the ball's ring whole, over the figure too",
-       {{"show", 1}, {"ball", 1}}},
-      {"counts-two-halos-one-bit",
-       "the blend counts with one bit for both: the ball's ring cut where the figure's is",
-       {{"show", 1}, {"ball", 1}, {"shared-bit", 1}}},
-  };
-  info.passes = {"scene", "reflection", "shadow", "tag", "halo", "measure"};
-  info.camera.target = {0.0f, 0.8f, 0.0f};
-  info.camera.distance = 4.9f;
-  info.camera.azimuthDeg = 30.0f;
-  info.camera.elevationDeg = 15.0f;
-  return info;
-}
-
 // ---- the stencil's bits, one owner each -----------------------------------------------------------
 constexpr GLuint kReflectBit = 0x01;  // visible floor: the reflection's tag
 constexpr GLuint kShadowBit = 0x02;   // visible floor not yet darkened: the shadow's tag
@@ -155,31 +73,9 @@ struct Piece {
   glm::vec3 colour;
 };
 
-// A unit shape (radius 1, height 2) scaled to halfSize along the frame's axes and put in place.
-Piece piece(const Mesh& unit, const glm::mat4& frame, glm::vec3 halfSize, glm::vec3 colour) {
-  return {transformed(unit, frame * glm::scale(glm::mat4(1), halfSize)), frame, halfSize, colour};
-}
-
-// The figure, feet on the floor at the origin, facing +z: a body, a head with a hat, two legs and
-// two raised arms, each a convex piece; together concave.
-std::vector<Piece> figurePieces() {
-  using glm::translate;
-  const glm::mat4 id(1.0f);
-  const glm::vec3 skin{0.95f, 0.55f, 0.3f}, cloth{0.3f, 0.45f, 0.85f}, hat{0.75f, 0.2f, 0.3f};
-  const Mesh ball = makeSphere(1.0f, 32, 16), limb = makeCylinder(1.0f, 2.0f, 24),
-             cone = makeCone(1.0f, 2.0f, 24);
-  std::vector<Piece> p;
-  p.push_back(piece(ball, translate(id, {0.0f, 0.95f, 0.0f}), {0.42f, 0.55f, 0.34f}, cloth));
-  p.push_back(piece(ball, translate(id, {0.0f, 1.74f, 0.0f}), glm::vec3(0.26f), skin));
-  p.push_back(piece(cone, translate(id, {0.0f, 2.12f, 0.0f}), {0.2f, 0.17f, 0.2f}, hat));
-  for (const float side : {-1.0f, 1.0f}) {
-    p.push_back(piece(limb, translate(id, {0.19f * side, 0.28f, 0.0f}), {0.11f, 0.28f, 0.11f}, cloth));
-    const glm::mat4 arm =
-        glm::rotate(translate(id, {0.6f * side, 1.2f, 0.0f}), glm::radians(-55.0f * side), {0, 0, 1});
-    p.push_back(piece(limb, arm, {0.085f, 0.36f, 0.085f}, skin));
-  }
-  return p;
-}
+// The figure's pieces and the ball's, made after the lesson.
+Piece piece(const Mesh& unit, const glm::mat4& frame, glm::vec3 halfSize, glm::vec3 colour);
+std::vector<Piece> figurePieces();
 
 // A haloed object on the GPU: its pieces, once as they are and once with smoothed normals (extrusion).
 struct HaloObject {
@@ -187,18 +83,7 @@ struct HaloObject {
   std::vector<std::unique_ptr<GpuMesh>> meshes, smooth;
   glm::vec3 centre{0.0f};  // of its bounding box, in its own space: where the whole object is scaled about
 
-  explicit HaloObject(std::vector<Piece> p) : pieces(std::move(p)) {
-    glm::vec3 lo(1e30f), hi(-1e30f);
-    for (const Piece& q : pieces) {
-      meshes.push_back(std::make_unique<GpuMesh>(q.mesh));
-      smooth.push_back(std::make_unique<GpuMesh>(smoothNormals(q.mesh)));
-      for (const glm::vec3& v : q.mesh.positions) {
-        lo = glm::min(lo, v);
-        hi = glm::max(hi, v);
-      }
-    }
-    centre = 0.5f * (lo + hi);
-  }
+  explicit HaloObject(std::vector<Piece> p);  // uploads the pieces, finds the centre
 };
 
 class Halo final : public Lesson {
@@ -590,6 +475,131 @@ class Halo final : public Lesson {
   GpuMesh floor_, rail_;
   HaloObject figure_, ball_;
 };
+
+// ---- the haloed objects ---------------------------------------------------------------------------
+
+HaloObject::HaloObject(std::vector<Piece> p) : pieces(std::move(p)) {
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (const Piece& q : pieces) {
+    meshes.push_back(std::make_unique<GpuMesh>(q.mesh));
+    smooth.push_back(std::make_unique<GpuMesh>(smoothNormals(q.mesh)));
+    for (const glm::vec3& v : q.mesh.positions) {
+      lo = glm::min(lo, v);
+      hi = glm::max(hi, v);
+    }
+  }
+  centre = 0.5f * (lo + hi);
+}
+
+// A unit shape (radius 1, height 2) scaled to halfSize along the frame's axes and put in place.
+Piece piece(const Mesh& unit, const glm::mat4& frame, glm::vec3 halfSize, glm::vec3 colour) {
+  return {transformed(unit, frame * glm::scale(glm::mat4(1), halfSize)), frame, halfSize, colour};
+}
+
+// The figure, feet on the floor at the origin, facing +z: a body, a head with a hat, two legs and
+// two raised arms, each a convex piece; together concave.
+std::vector<Piece> figurePieces() {
+  using glm::translate;
+  const glm::mat4 id(1.0f);
+  const glm::vec3 skin{0.95f, 0.55f, 0.3f}, cloth{0.3f, 0.45f, 0.85f}, hat{0.75f, 0.2f, 0.3f};
+  const Mesh ball = makeSphere(1.0f, 32, 16), limb = makeCylinder(1.0f, 2.0f, 24),
+             cone = makeCone(1.0f, 2.0f, 24);
+  std::vector<Piece> p;
+  p.push_back(piece(ball, translate(id, {0.0f, 0.95f, 0.0f}), {0.42f, 0.55f, 0.34f}, cloth));
+  p.push_back(piece(ball, translate(id, {0.0f, 1.74f, 0.0f}), glm::vec3(0.26f), skin));
+  p.push_back(piece(cone, translate(id, {0.0f, 2.12f, 0.0f}), {0.2f, 0.17f, 0.2f}, hat));
+  for (const float side : {-1.0f, 1.0f}) {
+    p.push_back(piece(limb, translate(id, {0.19f * side, 0.28f, 0.0f}), {0.11f, 0.28f, 0.11f}, cloth));
+    const glm::mat4 arm =
+        glm::rotate(translate(id, {0.6f * side, 1.2f, 0.0f}), glm::radians(-55.0f * side), {0, 0, 1});
+    p.push_back(piece(limb, arm, {0.085f, 0.36f, 0.085f}, skin));
+  }
+  return p;
+}
+
+// ---- the lesson: options, variants, camera -------------------------------------------------------
+
+LessonInfo lessonInfo() {
+  LessonInfo info;
+  info.id = "11-halo";
+  info.title = "The magic halo";
+  info.summary =
+      "A glow around an object that never covers it: the object grown and blended where its stencil tag is\n"
+      "absent, INVERT so each pixel blends once; one bit beside a reflection's and a shadow's on one floor.";
+  info.options = {
+      {"method", 'M',
+       "how the object grows: 0 the whole object scaled about its\n"
+       "      centre (the paper), 1 each convex piece grown about its own\n"
+       "      centre (the paper's fix), 2 pushed along its normals, 3 its\n"
+       "      outline moved k pixels every way (screen space: a draw per\n"
+       "      offset, the cost grows with the square of the height)",
+       kPieces, 3},
+      {"stencil", 'T', "tag the object and draw the halo only where the tag is absent", 1},
+      {"invert", 'I', "INVERT the halo's bit as each pixel blends, so no pixel blends twice", 1},
+      {"depth", 'Z', "the halo at the object's own depth (0: at the grown shell's, nearer)", 1},
+      {"floor", 'F', "over the visible floor (the reflection's bit) the halo skips the depth test", 1},
+      {"occluder", 'O', "a rail just in front of the figure", 0},
+      {"ball", 'B', "a second haloed object, its own bit: a ball in front of the figure's arm", 0},
+      {"shared-bit", 'H', "the ball's halo in the figure's bit (one bit for two halos)", 0},
+      {"reflect", 'E', "the floor's reflection", 1},
+      {"shadow", 'D', "the planar shadow on the floor", 1},
+      {"halo", 'G', "draw the halo at all (off: the tests' reference)", 1},
+      {"show", 'X',
+       "0 the shaded frame; 1 the blend counts: the same passes in flat\n"
+       "      colours, the figure blue, each blend of the figure's halo adding\n"
+       "      127 to red (twice 254), the ball's to green (--stats: measures)",
+       0},
+  };
+  info.variants = {
+      {"recipe",
+       "figure 17: the halo (a piece at a time), the reflection and the shadow share the stencil",
+       {}},
+      {"no-stencil",
+       "the halo without the stencil: the figure covered in yellow",
+       {{"stencil", 0}, {"depth", 0}}},
+      {"no-invert",
+       "the stencil tag but KEEP: where the pieces' shells overlap, pixels blend twice",
+       {{"invert", 0}}},
+      {"whole-object",
+       "the paper's recipe on a concave figure: scaled about its centre, an uneven ring",
+       {{"method", kWhole}}},
+      {"occluder",
+       "a rail just in front: the grown shell is nearer than the rail and paints over it",
+       {{"occluder", 1}, {"depth", 0}}},
+      {"occluder-fixed", "the shell at the figure's own depth: the rail hides the halo", {{"occluder", 1}}},
+      {"floor-cut",
+       "the shell below the floor fails the depth test: the ring is cut at the feet",
+       {{"floor", 0}}},
+      {"two-halos",
+       "a ball in front of the figure, one bit each: both halos blend once, also over each other",
+       {{"ball", 1}}},
+      {"two-halos-one-bit",
+       "both halos in one bit: the first halo's INVERT and tag cut the second",
+       {{"ball", 1}, {"shared-bit", 1}}},
+      {"extrude",
+       "engines: the surface pushed along its smoothed normals, an even width in world units",
+       {{"method", kExtrude}}},
+      {"screen",
+       "engines: the outline dilated by k pixels, the figure drawn shifted every way",
+       {{"method", kScreen}}},
+      {"counts", "the recipe's blend counts: every halo pixel blended once", {{"show", 1}}},
+      {"counts-no-invert",
+       "the blend counts without INVERT: the overlaps blended twice",
+       {{"show", 1}, {"invert", 0}}},
+      {"counts-two-halos",
+       "the blend counts of two halos, a bit each: the ball's ring whole, over the figure too",
+       {{"show", 1}, {"ball", 1}}},
+      {"counts-two-halos-one-bit",
+       "the blend counts with one bit for both: the ball's ring cut where the figure's is",
+       {{"show", 1}, {"ball", 1}, {"shared-bit", 1}}},
+  };
+  info.passes = {"scene", "reflection", "shadow", "tag", "halo", "measure"};
+  info.camera.target = {0.0f, 0.8f, 0.0f};
+  info.camera.distance = 4.9f;
+  info.camera.azimuthDeg = 30.0f;
+  info.camera.elevationDeg = 15.0f;
+  return info;
+}
 
 }  // namespace
 

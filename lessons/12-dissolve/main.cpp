@@ -62,132 +62,12 @@ constexpr int kMethodStencil = 0, kMethodMix = 1, kMethodDiscard = 2;
 constexpr int kPainted = 6;  // the pattern option: 0..5 PatternKind, 6 painted
 constexpr int kWindow = 8;   // the side of the windows the clumpiness is measured over
 
-LessonInfo lessonInfo() {
-  LessonInfo info;
-  info.id = "12-dissolve";
-  info.title = "The digital dissolve";
-  info.summary =
-      "A threshold pattern written once into the stencil picks, per pixel, scene A (stencil LESS) or\n"
-      "scene B (GEQUAL); the reference rising dissolves A into B in 257 exact states.";
-  info.options = {
-      {"method", 'M',
-       "0 the stencil (the paper), 1 draw both into textures and mix, 2 shade both and discard by the "
-       "pattern",
-       kMethodStencil, 2},
-      {"pattern", 'N',
-       "0 white noise, 1 Bayer 16x16, 2 blue noise (void-and-cluster 64x64), 3 linear wipe,\n"
-       "      4 radial wipe, 5 clock wipe, 6 painted (right mouse button in the window)",
-       static_cast<int>(PatternKind::BlueNoise), kPainted},
-      {"step", 'K', "the dissolve state k: the share k/256 of pixels show B; -1 follows time (0..256 in 4 s)",
-       -1, 256, -1},
-      {"exact-ends", 'E', "state 0 by ALWAYS/NEVER (off: the reference -1, clamped to 0, shows B at t = 0)",
-       1},
-      {"which", 'W', "which scene each pixel shows, flat: A red, B blue", 0},
-      {"brush", 'B',
-       "in the window, the right mouse button sprays B through A (0 into the stencil), on any pattern", 1},
-      {"work", 'H',
-       "extra arithmetic per fragment of the scenes (iterations), a stand-in for costly shading: what\n"
-       "      shading fewer fragments saves shows in the time",
-       0, 4096},
-      {"cell", 'C',
-       "the pattern's cell, in pixels: 1 per pixel; 2, 4, 8 hold one value over each 2x2, 4x4, 8x8 block\n"
-       "      (the share of B is then exact only where the cells fit the frame)",
-       1, 8, 1},
-      {"stroke", 'D',
-       "the painted mask's brush stroke, in dabs of 1/60 s along a fixed figure of eight; -1 follows\n"
-       "      time (a dab each 1/60 s)",
-       -1, 1800, -1},
-      {"measure", 'Q',
-       "count per frame: pixels of each scene by occlusion queries, fragments shaded (pipeline\n"
-       "      statistics where present), and the state swept 0..256 (the share of B, switch-backs)",
-       0},
-  };
-  info.variants = {
-      {"dissolve",
-       "blue noise, k following time (0..256 every 4 s): all A at t = 0, a quarter of the way at --time 1",
-       {}},
-      {"white-noise",
-       "half way (k = 128) through white noise: clumps and holes",
-       {{"pattern", 0}, {"step", 128}}},
-      {"bayer",
-       "half way through an ordered 16x16 Bayer dither: even, and a visible grid",
-       {{"pattern", 1}, {"step", 128}}},
-      {"blue-noise",
-       "half way through void-and-cluster blue noise: even, without a grid",
-       {{"pattern", 2}, {"step", 128}}},
-      {"blue-noise-cells",
-       "half way through blue noise held over 4x4 cells: coarser, and whole blocks of pixels to one scene",
-       {{"pattern", 2}, {"step", 128}, {"cell", 4}}},
-      {"linear-wipe", "half way through a left-to-right wipe", {{"pattern", 3}, {"step", 128}}},
-      {"radial-wipe", "half way through a wipe from the centre out", {{"pattern", 4}, {"step", 128}}},
-      {"clock-wipe",
-       "half way through a clockwise wipe from twelve o'clock",
-       {{"pattern", 5}, {"step", 128}}},
-      {"painted",
-       "the GLUT demo's mask: B sprayed through A along a brush stroke of 60 dabs (1 s), at any time",
-       {{"pattern", kPainted}, {"step", 128}, {"stroke", 60}}},
-      {"start", "state 0 with the exact ends: only scene A", {{"step", 0}}},
-      {"end", "state 256: only scene B", {{"step", 256}}},
-      {"start-clamped",
-       "state 0 by the reference -1, clamped to 0: B shows on 1/256 of the pixels",
-       {{"step", 0}, {"exact-ends", 0}, {"which", 1}}},
-      {"which-scene", "blue noise half way, each scene flat: A red, B blue", {{"step", 128}, {"which", 1}}},
-      {"mix",
-       "draw both whole into textures, mix by the pattern: the same picture, both scenes shaded",
-       {{"method", kMethodMix}, {"step", 128}}},
-      {"discard",
-       "shade both, discard by the pattern: the same picture, both scenes shaded",
-       {{"method", kMethodDiscard}, {"step", 128}}},
-  };
-  info.passes = {"pattern", "paint", "measure", "scene-a", "scene-b", "mix"};
-  info.camera.target = {0.0f, 0.6f, 0.0f};
-  info.camera.distance = 6.5f;
-  info.camera.azimuthDeg = 25.0f;
-  info.camera.elevationDeg = 20.0f;
-  return info;
-}
-
 // The dissolve state for a frame: the step option, or time climbing 0..256 every kDissolveSeconds.
 int dissolveState(const Frame& f) {
   if (f.option("step") >= 0) return f.option("step");
   const double phase = f.time / kDissolveSeconds - std::floor(f.time / kDissolveSeconds);
   return std::min(kStates - 1, static_cast<int>(phase * kStates));
 }
-
-// A colour texture and a depth buffer the size of the frame: one scene drawn whole (method mix).
-class SceneTarget {
- public:
-  ~SceneTarget() { release(); }
-  void ensure(glm::ivec2 size) {
-    if (size == size_ && fbo_) return;
-    release();
-    size_ = size;
-    glGenTextures(1, &colour_);
-    glBindTexture(GL_TEXTURE_2D, colour_);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size.x, size.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glGenRenderbuffers(1, &depth_);
-    glBindRenderbuffer(GL_RENDERBUFFER, depth_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size.x, size.y);
-    glGenFramebuffers(1, &fbo_);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_, 0);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
-  }
-  GLuint fbo() const { return fbo_; }
-  GLuint colour() const { return colour_; }
-
- private:
-  void release() {
-    if (fbo_) glDeleteFramebuffers(1, &fbo_);
-    if (colour_) glDeleteTextures(1, &colour_);
-    if (depth_) glDeleteRenderbuffers(1, &depth_);
-    fbo_ = colour_ = depth_ = 0;
-  }
-  GLuint fbo_ = 0, colour_ = 0, depth_ = 0;
-  glm::ivec2 size_{0};
-};
 
 class Dissolve final : public Lesson {
  public:
@@ -596,6 +476,43 @@ class Dissolve final : public Lesson {
     f.count("sweep_a_at_end", aAtEnd);
   }
 
+  // ---- a framebuffer per scene (method mix) ------------------------------------------------------
+
+  // A colour texture and a depth buffer the size of the frame: one scene drawn whole (method mix).
+  class SceneTarget {
+   public:
+    ~SceneTarget() { release(); }
+    void ensure(glm::ivec2 size) {
+      if (size == size_ && fbo_) return;
+      release();
+      size_ = size;
+      glGenTextures(1, &colour_);
+      glBindTexture(GL_TEXTURE_2D, colour_);
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size.x, size.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      glGenRenderbuffers(1, &depth_);
+      glBindRenderbuffer(GL_RENDERBUFFER, depth_);
+      glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size.x, size.y);
+      glGenFramebuffers(1, &fbo_);
+      glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_, 0);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+    }
+    GLuint fbo() const { return fbo_; }
+    GLuint colour() const { return colour_; }
+
+   private:
+    void release() {
+      if (fbo_) glDeleteFramebuffers(1, &fbo_);
+      if (colour_) glDeleteTextures(1, &colour_);
+      if (depth_) glDeleteRenderbuffers(1, &depth_);
+      fbo_ = colour_ = depth_ = 0;
+    }
+    GLuint fbo_ = 0, colour_ = 0, depth_ = 0;
+    glm::ivec2 size_{0};
+  };
+
   Program lit_, litDiscard_, patternBit_, mix_, spray_;
   GpuMesh screen_, groundA_, torus_, cube_, groundB_, sphere_, cone_, cylinder_;
   GpuVertexStream dots_;
@@ -607,6 +524,93 @@ class Dissolve final : public Lesson {
   std::uint32_t paintedDabs_ = 0;
   std::uint64_t patternMicroseconds_ = 0;
 };
+
+// ---- the lesson: options, variants, camera -------------------------------------------------------
+
+LessonInfo lessonInfo() {
+  LessonInfo info;
+  info.id = "12-dissolve";
+  info.title = "The digital dissolve";
+  info.summary =
+      "A threshold pattern written once into the stencil picks, per pixel, scene A (stencil LESS) or\n"
+      "scene B (GEQUAL); the reference rising dissolves A into B in 257 exact states.";
+  info.options = {
+      {"method", 'M',
+       "0 the stencil (the paper), 1 draw both into textures and mix, 2 shade both and discard by the "
+       "pattern",
+       kMethodStencil, 2},
+      {"pattern", 'N',
+       "0 white noise, 1 Bayer 16x16, 2 blue noise (void-and-cluster 64x64), 3 linear wipe,\n"
+       "      4 radial wipe, 5 clock wipe, 6 painted (right mouse button in the window)",
+       static_cast<int>(PatternKind::BlueNoise), kPainted},
+      {"step", 'K', "the dissolve state k: the share k/256 of pixels show B; -1 follows time (0..256 in 4 s)",
+       -1, 256, -1},
+      {"exact-ends", 'E', "state 0 by ALWAYS/NEVER (off: the reference -1, clamped to 0, shows B at t = 0)",
+       1},
+      {"which", 'W', "which scene each pixel shows, flat: A red, B blue", 0},
+      {"brush", 'B',
+       "in the window, the right mouse button sprays B through A (0 into the stencil), on any pattern", 1},
+      {"work", 'H',
+       "extra arithmetic per fragment of the scenes (iterations), a stand-in for costly shading: what\n"
+       "      shading fewer fragments saves shows in the time",
+       0, 4096},
+      {"cell", 'C',
+       "the pattern's cell, in pixels: 1 per pixel; 2, 4, 8 hold one value over each 2x2, 4x4, 8x8 block\n"
+       "      (the share of B is then exact only where the cells fit the frame)",
+       1, 8, 1},
+      {"stroke", 'D',
+       "the painted mask's brush stroke, in dabs of 1/60 s along a fixed figure of eight; -1 follows\n"
+       "      time (a dab each 1/60 s)",
+       -1, 1800, -1},
+      {"measure", 'Q',
+       "count per frame: pixels of each scene by occlusion queries, fragments shaded (pipeline\n"
+       "      statistics where present), and the state swept 0..256 (the share of B, switch-backs)",
+       0},
+  };
+  info.variants = {
+      {"dissolve",
+       "blue noise, k following time (0..256 every 4 s): all A at t = 0, a quarter of the way at --time 1",
+       {}},
+      {"white-noise",
+       "half way (k = 128) through white noise: clumps and holes",
+       {{"pattern", 0}, {"step", 128}}},
+      {"bayer",
+       "half way through an ordered 16x16 Bayer dither: even, and a visible grid",
+       {{"pattern", 1}, {"step", 128}}},
+      {"blue-noise",
+       "half way through void-and-cluster blue noise: even, without a grid",
+       {{"pattern", 2}, {"step", 128}}},
+      {"blue-noise-cells",
+       "half way through blue noise held over 4x4 cells: coarser, and whole blocks of pixels to one scene",
+       {{"pattern", 2}, {"step", 128}, {"cell", 4}}},
+      {"linear-wipe", "half way through a left-to-right wipe", {{"pattern", 3}, {"step", 128}}},
+      {"radial-wipe", "half way through a wipe from the centre out", {{"pattern", 4}, {"step", 128}}},
+      {"clock-wipe",
+       "half way through a clockwise wipe from twelve o'clock",
+       {{"pattern", 5}, {"step", 128}}},
+      {"painted",
+       "the GLUT demo's mask: B sprayed through A along a brush stroke of 60 dabs (1 s), at any time",
+       {{"pattern", kPainted}, {"step", 128}, {"stroke", 60}}},
+      {"start", "state 0 with the exact ends: only scene A", {{"step", 0}}},
+      {"end", "state 256: only scene B", {{"step", 256}}},
+      {"start-clamped",
+       "state 0 by the reference -1, clamped to 0: B shows on 1/256 of the pixels",
+       {{"step", 0}, {"exact-ends", 0}, {"which", 1}}},
+      {"which-scene", "blue noise half way, each scene flat: A red, B blue", {{"step", 128}, {"which", 1}}},
+      {"mix",
+       "draw both whole into textures, mix by the pattern: the same picture, both scenes shaded",
+       {{"method", kMethodMix}, {"step", 128}}},
+      {"discard",
+       "shade both, discard by the pattern: the same picture, both scenes shaded",
+       {{"method", kMethodDiscard}, {"step", 128}}},
+  };
+  info.passes = {"pattern", "paint", "measure", "scene-a", "scene-b", "mix"};
+  info.camera.target = {0.0f, 0.6f, 0.0f};
+  info.camera.distance = 6.5f;
+  info.camera.azimuthDeg = 25.0f;
+  info.camera.elevationDeg = 20.0f;
+  return info;
+}
 
 }  // namespace
 

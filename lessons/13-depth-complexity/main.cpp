@@ -57,115 +57,6 @@ constexpr int kStackLayers = 300;  // more than an 8-bit stencil counts
 // What the count pass counts (the "count" option).
 constexpr int kEveryFragment = 0, kDepthPass = 1, kDepthFail = 2, kBothOutcomes = 3;
 
-// Straight down the stack of quads (stackScene), from 4 units in front of the nearest.
-OrbitCamera alongTheStack() {
-  OrbitCamera c;
-  c.target = {0.0f, 0.0f, -3.0f};
-  c.distance = 7.0f;
-  c.azimuthDeg = 0.0f;
-  c.elevationDeg = 0.0f;
-  c.farPlane = 40.0f;
-  return c;
-}
-
-// For the volumes' fill: the eye low in the nested cubes' shadow, looking past them at the spheres
-// and tori, so casters lie between the light and the near plane (cases 2 and 3) and the methods
-// differ; the far plane at infinity, where the volumes' far ends lie.
-OrbitCamera inTheCubesShadow() {
-  const glm::vec3 light(3.0f, 6.0f, 4.0f), cubeTop(-1.7f, 1.65f, -0.2f);
-  const glm::vec3 eye = light + 1.287f * (cubeTop - light), target(0.6f, 0.6f, 0.6f);
-  const glm::vec3 back = eye - target;
-  OrbitCamera c;
-  c.target = target;
-  c.distance = glm::length(back);
-  c.elevationDeg = glm::degrees(std::asin(back.y / c.distance));
-  c.azimuthDeg = glm::degrees(std::atan2(back.x, back.z));
-  c.fovyDeg = 70.0f;
-  c.farPlane = std::numeric_limits<float>::infinity();
-  return c;
-}
-
-LessonInfo lessonInfo() {
-  LessonInfo info;
-  info.id = "13-depth-complexity";
-  info.title = "Depth complexity";
-  info.summary =
-      "The scene drawn once more into the stencil only, INCR on every fragment, on those that pass the\n"
-      "depth test or on those that fail it; the counts in pseudo-colour with a histogram from occlusion "
-      "queries.";
-  info.options = {
-      {"count", 'C',
-       "what is counted: 0 every fragment (depth test off), 1 fragments that pass the depth test,\n"
-       "      2 fragments that fail it, 3 every fragment by INCR on both depth outcomes",
-       kEveryFragment, 3},
-      {"cull", 'U', "cull back faces: only front faces are drawn, and counted", 0},
-      {"show", 'X', "the counts in pseudo-colour (off: the shaded scene; the stencil counts all the same)",
-       1},
-      {"legend", 'L', "the legend: a column per count, its bar the share of pixels with that count", 1},
-      {"wrap", 'W', "INCR_WRAP, which starts again at 0 after 255 (off: INCR, which stops at 255)", 0},
-      {"stack", 'T', "a stack of 300 quads face on instead of the objects: counts past 255", 0},
-      {"volumes", 'F',
-       "count the shadow volumes' fill instead of the scene: every fragment of every light's volumes,\n"
-       "      built as lesson 16's method builds them: 0 off, 1 McGuire et al., 2 Everitt-Kilgard,\n"
-       "      3 Lengyel, 4 z-pass",
-       0, 4},
-      {"bounds", 'B', "volumes: the lights' bounds cull casters, scissor and depth-bound their volumes", 1},
-      {"oracle", 'K',
-       "check the stencil against a CPU count of the surfaces each pixel's ray crosses\n"
-       "      (every fragment only; --stats reports oracle_*)",
-       0},
-  };
-  info.variants = {
-      {"all", "every fragment counted, both sides of every surface", {}},
-      {"all-culled", "every fragment of the front faces: back faces culled", {{"cull", 1}}},
-      {"depth-pass",
-       "the fragments that pass the depth test: what was written, in draw order",
-       {{"count", kDepthPass}}},
-      {"depth-fail", "the fragments that fail the depth test: drawn for nothing", {{"count", kDepthFail}}},
-      {"both-outcomes",
-       "INCR on both depth outcomes, depth test on: the same as every fragment",
-       {{"count", kBothOutcomes}}},
-      {"shaded", "the scene the counts are of, shaded", {{"show", 0}}},
-      {"stack-saturates",
-       "300 quads, INCR: the count stops at 255, shown as 255+",
-       {{"stack", 1}},
-       {},
-       alongTheStack()},
-      {"stack-wraps",
-       "300 quads, INCR_WRAP: 300 wraps to 44, silently wrong",
-       {{"stack", 1}, {"wrap", 1}},
-       {},
-       alongTheStack()},
-      {"fill-mcguire",
-       "the shadow volumes' fill, McGuire et al.: per caster z-pass sides, or z-fail with a fan cap",
-       {{"volumes", 1}},
-       {},
-       inTheCubesShadow()},
-      {"fill-everitt-kilgard",
-       "the shadow volumes' fill, Everitt-Kilgard: every volume closed by both caps",
-       {{"volumes", 2}},
-       {},
-       inTheCubesShadow()},
-      {"fill-lengyel",
-       "the shadow volumes' fill, Lengyel: z-pass unless a caster is in the pyramid",
-       {{"volumes", 3}},
-       {},
-       inTheCubesShadow()},
-      {"fill-zpass",
-       "the shadow volumes' fill, z-pass: the sides alone",
-       {{"volumes", 4}},
-       {},
-       inTheCubesShadow()},
-  };
-  info.passes = {"scene", "count", "histogram", "show", "legend"};
-  info.camera.target = {0.0f, 0.7f, 0.0f};
-  info.camera.distance = 7.5f;
-  info.camera.azimuthDeg = 20.0f;
-  info.camera.elevationDeg = 22.0f;
-  info.camera.farPlane = 40.0f;
-  return info;
-}
-
 class DepthComplexity final : public Lesson {
  public:
   explicit DepthComplexity(const Scene* fromFile)
@@ -478,7 +369,22 @@ class DepthComplexity final : public Lesson {
     return s;
   }
 
-  // ---- what --stats reports, and the oracle -------------------------------------------------------
+  // A shadow caster of the scene: its object, bounds in its own space, doubled vertices on the GPU.
+  struct Caster {
+    std::size_t object;
+    BoundingSphere bounds;
+    std::unique_ptr<DoubledCaster> gpu;
+  };
+
+  Program light_, flat_, extrude_;
+  Mesh quadMesh_;
+  GpuMesh quad_;
+  Scene scene_, stack_;
+  std::map<const Mesh*, std::unique_ptr<GpuMesh>> gpu_;
+  ImageOverlay overlay_;
+  std::vector<Caster> casters_;
+
+  // ---- test hooks: what --stats reports, and the oracle -----------------------------------------
 
   static void report(Frame& f, const std::vector<std::uint64_t>& histogram, int largest,
                      std::uint64_t counted, std::uint64_t covered) {
@@ -519,22 +425,110 @@ class DepthComplexity final : public Lesson {
     f.count("oracle_on_edges", r.onEdges);
     f.count("oracle_expected_fragments", r.expectedTotal);
   }
-
-  // A shadow caster of the scene: its object, bounds in its own space, doubled vertices on the GPU.
-  struct Caster {
-    std::size_t object;
-    BoundingSphere bounds;
-    std::unique_ptr<DoubledCaster> gpu;
-  };
-
-  Program light_, flat_, extrude_;
-  Mesh quadMesh_;
-  GpuMesh quad_;
-  Scene scene_, stack_;
-  std::map<const Mesh*, std::unique_ptr<GpuMesh>> gpu_;
-  ImageOverlay overlay_;
-  std::vector<Caster> casters_;
 };
+
+// ---- the lesson: options, variants, cameras ------------------------------------------------------
+
+// Straight down the stack of quads (stackScene), from 4 units in front of the nearest.
+OrbitCamera alongTheStack() {
+  return {.target = {0.0f, 0.0f, -3.0f},
+          .distance = 7.0f,
+          .azimuthDeg = 0.0f,
+          .elevationDeg = 0.0f,
+          .farPlane = 40.0f};
+}
+
+// For the volumes' fill: the eye low in the nested cubes' shadow, looking past them at the spheres
+// and tori, so casters lie between the light and the near plane (cases 2 and 3) and the methods
+// differ; the far plane at infinity, where the volumes' far ends lie.
+OrbitCamera inTheCubesShadow() {
+  const glm::vec3 light(3.0f, 6.0f, 4.0f), cubeTop(-1.7f, 1.65f, -0.2f);
+  OrbitCamera c = orbitCameraFrom(light + 1.287f * (cubeTop - light), {0.6f, 0.6f, 0.6f});
+  c.fovyDeg = 70.0f;
+  c.farPlane = std::numeric_limits<float>::infinity();
+  return c;
+}
+
+LessonInfo lessonInfo() {
+  LessonInfo info;
+  info.id = "13-depth-complexity";
+  info.title = "Depth complexity";
+  info.summary =
+      "The scene drawn once more into the stencil only, INCR on every fragment, on those that pass the\n"
+      "depth test or on those that fail it; the counts in pseudo-colour with a histogram from occlusion "
+      "queries.";
+  info.options = {
+      {"count", 'C',
+       "what is counted: 0 every fragment (depth test off), 1 fragments that pass the depth test,\n"
+       "      2 fragments that fail it, 3 every fragment by INCR on both depth outcomes",
+       kEveryFragment, 3},
+      {"cull", 'U', "cull back faces: only front faces are drawn, and counted", 0},
+      {"show", 'X', "the counts in pseudo-colour (off: the shaded scene; the stencil counts all the same)",
+       1},
+      {"legend", 'L', "the legend: a column per count, its bar the share of pixels with that count", 1},
+      {"wrap", 'W', "INCR_WRAP, which starts again at 0 after 255 (off: INCR, which stops at 255)", 0},
+      {"stack", 'T', "a stack of 300 quads face on instead of the objects: counts past 255", 0},
+      {"volumes", 'F',
+       "count the shadow volumes' fill instead of the scene: every fragment of every light's volumes,\n"
+       "      built as lesson 16's method builds them: 0 off, 1 McGuire et al., 2 Everitt-Kilgard,\n"
+       "      3 Lengyel, 4 z-pass",
+       0, 4},
+      {"bounds", 'B', "volumes: the lights' bounds cull casters, scissor and depth-bound their volumes", 1},
+      {"oracle", 'K',
+       "check the stencil against a CPU count of the surfaces each pixel's ray crosses\n"
+       "      (every fragment only; --stats reports oracle_*)",
+       0},
+  };
+  info.variants = {
+      {"all", "every fragment counted, both sides of every surface", {}},
+      {"all-culled", "every fragment of the front faces: back faces culled", {{"cull", 1}}},
+      {"depth-pass",
+       "the fragments that pass the depth test: what was written, in draw order",
+       {{"count", kDepthPass}}},
+      {"depth-fail", "the fragments that fail the depth test: drawn for nothing", {{"count", kDepthFail}}},
+      {"both-outcomes",
+       "INCR on both depth outcomes, depth test on: the same as every fragment",
+       {{"count", kBothOutcomes}}},
+      {"shaded", "the scene the counts are of, shaded", {{"show", 0}}},
+      {"stack-saturates",
+       "300 quads, INCR: the count stops at 255, shown as 255+",
+       {{"stack", 1}},
+       {},
+       alongTheStack()},
+      {"stack-wraps",
+       "300 quads, INCR_WRAP: 300 wraps to 44, silently wrong",
+       {{"stack", 1}, {"wrap", 1}},
+       {},
+       alongTheStack()},
+      {"fill-mcguire",
+       "the shadow volumes' fill, McGuire et al.: per caster z-pass sides, or z-fail with a fan cap",
+       {{"volumes", 1}},
+       {},
+       inTheCubesShadow()},
+      {"fill-everitt-kilgard",
+       "the shadow volumes' fill, Everitt-Kilgard: every volume closed by both caps",
+       {{"volumes", 2}},
+       {},
+       inTheCubesShadow()},
+      {"fill-lengyel",
+       "the shadow volumes' fill, Lengyel: z-pass unless a caster is in the pyramid",
+       {{"volumes", 3}},
+       {},
+       inTheCubesShadow()},
+      {"fill-zpass",
+       "the shadow volumes' fill, z-pass: the sides alone",
+       {{"volumes", 4}},
+       {},
+       inTheCubesShadow()},
+  };
+  info.passes = {"scene", "count", "histogram", "show", "legend"};
+  info.camera.target = {0.0f, 0.7f, 0.0f};
+  info.camera.distance = 7.5f;
+  info.camera.azimuthDeg = 20.0f;
+  info.camera.elevationDeg = 22.0f;
+  info.camera.farPlane = 40.0f;
+  return info;
+}
 
 }  // namespace
 

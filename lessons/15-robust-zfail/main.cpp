@@ -43,168 +43,7 @@ namespace {
 
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
-// The lesson's view: the far plane at infinity (Pinf).
-OrbitCamera pinfCamera() {
-  OrbitCamera c;
-  c.target = {0.0f, 0.9f, 0.0f};
-  c.distance = 10.0f;
-  c.azimuthDeg = 28.0f;
-  c.elevationDeg = 30.0f;
-  c.fovyDeg = 45.0f;
-  c.nearPlane = 0.1f;
-  c.farPlane = kInfinity;
-  return c;
-}
-
-// The same view with a far plane just beyond the scene: it cuts the volumes behind it.
-OrbitCamera finiteFarCamera() {
-  OrbitCamera c = pinfCamera();
-  c.farPlane = 16.0f;
-  return c;
-}
-
-// Looking down past the cube at its shadow, the near plane (1.0) far enough out to cut through
-// the side of the cube's volume: the rays that start inside it miss their entry.
-OrbitCamera nearPlaneCamera() {
-  OrbitCamera c;
-  c.target = {-0.72f, 0.0f, -0.8f};
-  c.distance = 2.2f;
-  c.azimuthDeg = 140.0f;
-  c.elevationDeg = 40.0f;
-  c.fovyDeg = 70.0f;
-  c.nearPlane = 1.0f;
-  c.farPlane = kInfinity;
-  return c;
-}
-
-// The eye between the cube and its shadow on the ground, inside the cube's volume.
-OrbitCamera eyeInsideCamera() {
-  OrbitCamera c;
-  c.target = {1.5f, 0.3f, 2.5f};
-  c.distance = 3.9f;
-  c.azimuthDeg = -150.0f;
-  c.elevationDeg = 8.0f;
-  c.fovyDeg = 70.0f;
-  c.nearPlane = 0.1f;
-  c.farPlane = kInfinity;
-  return c;
-}
-
-// A parallel view: w = 0 has no place in it (see extrusionReach).
-OrbitCamera orthographicCamera() {
-  OrbitCamera c = pinfCamera();
-  c.orthographic = true;
-  c.azimuthDeg = 24.0f;
-  c.orthoHeight = 9.0f;
-  c.nearPlane = 0.1f;
-  c.farPlane = 20.0f;
-  return c;
-}
-
-LessonInfo lessonInfo() {
-  LessonInfo info;
-  info.id = "15-robust-zfail";
-  info.title = "Robust z-fail shadow volumes";
-  info.summary =
-      "Closed volumes counted behind the surface (z-fail) with two-sided wrapping stencil, the far plane\n"
-      "at infinity or depth clamping, point and directional lights, coloured lights over an ambient pass.";
-  info.options = {
-      {"zpass", 'Z', "count in front of the surface (z-pass) instead of behind it (z-fail)", 0},
-      {"caps", 'C', "close the volumes with their caps (off: the sides alone, all that z-pass needs)", 1},
-      {"depth-clamp", 'D', "GL_DEPTH_CLAMP while counting: nothing beyond the far plane is clipped", 0},
-      {"lights", 'N',
-       "how many of the built-in scene's lights shine, the first ones (0: all; a file's all shine)", 0, 8},
-      {"directional", 'L', "the first light becomes a directional light", 0},
-      {"last", 'K', "the light drawn last, whose count the stencil keeps (--oracle checks it)", 0, 8},
-      {"shadow", 'H', "shadows at all (off: every light everywhere)", 1},
-      {"show", 'X', "draw the volumes translucently and the silhouettes as lines", 0},
-  };
-  const std::vector<Feature> clamp = {Feature::DepthClamp};
-  info.variants = {
-      {"zfail", "z-fail, the far plane at infinity, two-sided wrapping stencil", {{"lights", 1}}},
-      {"pinf-fixed24",
-       "the same on the old path: a 24-bit fixed-point depth buffer with GL's depth mapping (Pinf)",
-       {{"lights", 1}},
-       {},
-       {},
-       false},
-      {"zpass",
-       "z-pass with the same view: where nothing clips, the very same counts",
-       {{"lights", 1}, {"zpass", 1}}},
-      {"zpass-near-plane",
-       "z-pass with the near plane cutting the cube's volume: the entries it clips are lost",
-       {{"lights", 1}, {"zpass", 1}},
-       {},
-       nearPlaneCamera()},
-      {"zfail-near-plane",
-       "the same view with z-fail: nothing behind the surface is clipped",
-       {{"lights", 1}},
-       {},
-       nearPlaneCamera()},
-      {"zfail-no-caps",
-       "z-fail counting the sides alone: an open volume's count is off",
-       {{"lights", 1}, {"caps", 0}}},
-      {"zfail-finite-far",
-       "z-fail with a finite far plane: it clips the volumes' far ends, their exits are lost",
-       {{"lights", 1}},
-       {},
-       finiteFarCamera()},
-      {"depth-clamp",
-       "the same finite far plane with depth clamping: the far ends are kept",
-       {{"lights", 1}, {"depth-clamp", 1}},
-       clamp,
-       finiteFarCamera()},
-      {"orthographic",
-       "a parallel view: volumes pushed past the scene, depth-clamped",
-       {{"lights", 1}, {"depth-clamp", 1}},
-       clamp,
-       orthographicCamera()},
-      {"directional",
-       "a directional light: the sides meet at one point at infinity",
-       {{"lights", 1}, {"directional", 1}}},
-      {"eye-inside",
-       "the eye inside the cube's volume: z-fail needs no correction",
-       {{"lights", 1}},
-       {},
-       eyeInsideCamera()},
-      {"coloured-lights", "three coloured lights added over the ambient pass", {}},
-      {"show-volumes", "the volumes translucently, the silhouettes as lines", {{"show", 1}}},
-  };
-  info.sceneLightOption = "last";
-  info.shadows = true;
-  info.passes = {"ambient", "volumes", "lit", "show-volumes", "silhouettes"};
-  info.camera = pinfCamera();
-  info.reversedDepth = true;  // a float depth buffer, reversed, where the driver has clip control
-  return info;
-}
-
-// The scene built in: a ground, a back wall and three closed casters, three lights.
-Scene builtInScene() {
-  Scene scene;
-  scene.ambient = glm::vec3(0.22f);
-  const auto add = [&scene](std::string name, Mesh mesh, glm::mat4 model, glm::vec3 colour, bool casts) {
-    scene.objects.push_back(sceneObject(std::move(name), std::move(mesh), model, colour, casts));
-    return &scene.objects.back();
-  };
-  const glm::mat4 wall =
-      glm::rotate(glm::translate(glm::mat4(1), {0, 3, -4}), glm::radians(90.0f), {1, 0, 0});
-  add("ground", makePlane(4.0f), glm::mat4(1), {0.75f, 0.75f, 0.7f}, false);
-  add("wall", makePlane(4.0f), wall, {0.7f, 0.68f, 0.65f}, false);
-  add("cube", makeCube(0.5f), glm::rotate(glm::translate(glm::mat4(1), {0, 1.7f, 0}), 0.6f, {1, 0, 1}),
-      {0.9f, 0.45f, 0.2f}, true)
-      ->spinDegPerSecond = 20.0f;
-  add("ball", makeSphere(0.45f, 24, 12), glm::translate(glm::mat4(1), {1.5f, 1.0f, 0.9f}), {0.3f, 0.7f, 0.4f},
-      true);
-  SceneObject* torus = add("torus", makeTorus(0.55f, 0.18f, 32, 12),
-                           glm::rotate(glm::translate(glm::mat4(1), {-1.5f, 1.1f, 0.7f}), 1.1f, {1, 0, 0}),
-                           {0.85f, 0.4f, 0.5f}, true);
-  torus->spinAxis = {0, 0, 1};
-  torus->spinDegPerSecond = 25.0f;
-  scene.lights = {{{1.6f, 5.5f, 1.8f, 1.0f}, {1.0f, 0.97f, 0.9f}},
-                  {{-3.5f, 4.0f, 2.5f, 1.0f}, {0.95f, 0.3f, 0.25f}},
-                  {{3.0f, 3.5f, -1.0f, 1.0f}, {0.3f, 0.45f, 1.0f}}};
-  return scene;
-}
+Scene builtInScene();  // defined after the lesson
 
 // The paper's requirements, checked once: closed, two-manifold, consistently wound casters
 // (prepareCaster's report) and model matrices that keep w >= 0 (affine). One line if not.
@@ -343,20 +182,6 @@ class RobustZFail final : public Lesson {
 
     if (f.on("show")) showVolumes(f, lights);
     glFrontFace(GL_CCW);
-  }
-
-  // The light drawn last keeps its count in the stencil. Every visible object receives, the
-  // casters included (their unlit sides lie in their own volumes). A count of zero is lit.
-  std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
-    if (!f.on("shadow")) return std::nullopt;
-    ShadowCheck check{
-        {}, lightsInOrder(f).back().light.position, [](std::uint8_t s) { return s == 0; }, true};
-    const std::vector<glm::mat4> models = modelsAt(f.time);
-    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-      const SceneObject& o = scene_.objects[i];
-      check.objects.push_back({&o.mesh, models[i], o.casts, o.receives});
-    }
-    return check;
   }
 
  private:
@@ -597,7 +422,183 @@ class RobustZFail final : public Lesson {
   std::vector<std::unique_ptr<GpuTriangles>> volumes_;  // per light, per object (empty for non-casters)
   std::vector<glm::mat4> volumeModels_;
   GpuLines silhouettes_;
+
+  // ---- test hooks ---------------------------------------------------------------------------------
+
+ public:
+  // The light drawn last keeps its count in the stencil. Every visible object receives, the
+  // casters included (their unlit sides lie in their own volumes). A count of zero is lit.
+  std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
+    if (!f.on("shadow")) return std::nullopt;
+    ShadowCheck check{
+        {}, lightsInOrder(f).back().light.position, [](std::uint8_t s) { return s == 0; }, true};
+    const std::vector<glm::mat4> models = modelsAt(f.time);
+    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+      const SceneObject& o = scene_.objects[i];
+      check.objects.push_back({&o.mesh, models[i], o.casts, o.receives});
+    }
+    return check;
+  }
 };
+
+// The scene built in: a ground, a back wall and three closed casters, three lights.
+Scene builtInScene() {
+  Scene scene;
+  scene.ambient = glm::vec3(0.22f);
+  const auto add = [&scene](std::string name, Mesh mesh, glm::mat4 model, glm::vec3 colour, bool casts) {
+    scene.objects.push_back(sceneObject(std::move(name), std::move(mesh), model, colour, casts));
+    return &scene.objects.back();
+  };
+  const glm::mat4 wall =
+      glm::rotate(glm::translate(glm::mat4(1), {0, 3, -4}), glm::radians(90.0f), {1, 0, 0});
+  add("ground", makePlane(4.0f), glm::mat4(1), {0.75f, 0.75f, 0.7f}, false);
+  add("wall", makePlane(4.0f), wall, {0.7f, 0.68f, 0.65f}, false);
+  add("cube", makeCube(0.5f), glm::rotate(glm::translate(glm::mat4(1), {0, 1.7f, 0}), 0.6f, {1, 0, 1}),
+      {0.9f, 0.45f, 0.2f}, true)
+      ->spinDegPerSecond = 20.0f;
+  add("ball", makeSphere(0.45f, 24, 12), glm::translate(glm::mat4(1), {1.5f, 1.0f, 0.9f}), {0.3f, 0.7f, 0.4f},
+      true);
+  SceneObject* torus = add("torus", makeTorus(0.55f, 0.18f, 32, 12),
+                           glm::rotate(glm::translate(glm::mat4(1), {-1.5f, 1.1f, 0.7f}), 1.1f, {1, 0, 0}),
+                           {0.85f, 0.4f, 0.5f}, true);
+  torus->spinAxis = {0, 0, 1};
+  torus->spinDegPerSecond = 25.0f;
+  scene.lights = {{{1.6f, 5.5f, 1.8f, 1.0f}, {1.0f, 0.97f, 0.9f}},
+                  {{-3.5f, 4.0f, 2.5f, 1.0f}, {0.95f, 0.3f, 0.25f}},
+                  {{3.0f, 3.5f, -1.0f, 1.0f}, {0.3f, 0.45f, 1.0f}}};
+  return scene;
+}
+
+// ---- the lesson: options, variants, cameras ------------------------------------------------------
+
+// The lesson's view: the far plane at infinity (Pinf).
+OrbitCamera pinfCamera() {
+  return {.target = {0.0f, 0.9f, 0.0f},
+          .distance = 10.0f,
+          .azimuthDeg = 28.0f,
+          .elevationDeg = 30.0f,
+          .fovyDeg = 45.0f,
+          .nearPlane = 0.1f,
+          .farPlane = kInfinity};
+}
+
+// The same view with a far plane just beyond the scene: it cuts the volumes behind it.
+OrbitCamera finiteFarCamera() {
+  OrbitCamera c = pinfCamera();
+  c.farPlane = 16.0f;
+  return c;
+}
+
+// Looking down past the cube at its shadow, the near plane (1.0) far enough out to cut through
+// the side of the cube's volume: the rays that start inside it miss their entry.
+OrbitCamera nearPlaneCamera() {
+  return {.target = {-0.72f, 0.0f, -0.8f},
+          .distance = 2.2f,
+          .azimuthDeg = 140.0f,
+          .elevationDeg = 40.0f,
+          .fovyDeg = 70.0f,
+          .nearPlane = 1.0f,
+          .farPlane = kInfinity};
+}
+
+// The eye between the cube and its shadow on the ground, inside the cube's volume.
+OrbitCamera eyeInsideCamera() {
+  return {.target = {1.5f, 0.3f, 2.5f},
+          .distance = 3.9f,
+          .azimuthDeg = -150.0f,
+          .elevationDeg = 8.0f,
+          .fovyDeg = 70.0f,
+          .nearPlane = 0.1f,
+          .farPlane = kInfinity};
+}
+
+// A parallel view: w = 0 has no place in it (see extrusionReach).
+OrbitCamera orthographicCamera() {
+  OrbitCamera c = pinfCamera();
+  c.orthographic = true;
+  c.azimuthDeg = 24.0f;
+  c.orthoHeight = 9.0f;
+  c.nearPlane = 0.1f;
+  c.farPlane = 20.0f;
+  return c;
+}
+
+LessonInfo lessonInfo() {
+  LessonInfo info;
+  info.id = "15-robust-zfail";
+  info.title = "Robust z-fail shadow volumes";
+  info.summary =
+      "Closed volumes counted behind the surface (z-fail) with two-sided wrapping stencil, the far plane\n"
+      "at infinity or depth clamping, point and directional lights, coloured lights over an ambient pass.";
+  info.options = {
+      {"zpass", 'Z', "count in front of the surface (z-pass) instead of behind it (z-fail)", 0},
+      {"caps", 'C', "close the volumes with their caps (off: the sides alone, all that z-pass needs)", 1},
+      {"depth-clamp", 'D', "GL_DEPTH_CLAMP while counting: nothing beyond the far plane is clipped", 0},
+      {"lights", 'N',
+       "how many of the built-in scene's lights shine, the first ones (0: all; a file's all shine)", 0, 8},
+      {"directional", 'L', "the first light becomes a directional light", 0},
+      {"last", 'K', "the light drawn last, whose count the stencil keeps (--oracle checks it)", 0, 8},
+      {"shadow", 'H', "shadows at all (off: every light everywhere)", 1},
+      {"show", 'X', "draw the volumes translucently and the silhouettes as lines", 0},
+  };
+  const std::vector<Feature> clamp = {Feature::DepthClamp};
+  info.variants = {
+      {"zfail", "z-fail, the far plane at infinity, two-sided wrapping stencil", {{"lights", 1}}},
+      {"pinf-fixed24",
+       "the same on the old path: a 24-bit fixed-point depth buffer with GL's depth mapping (Pinf)",
+       {{"lights", 1}},
+       {},
+       {},
+       false},
+      {"zpass",
+       "z-pass with the same view: where nothing clips, the very same counts",
+       {{"lights", 1}, {"zpass", 1}}},
+      {"zpass-near-plane",
+       "z-pass with the near plane cutting the cube's volume: the entries it clips are lost",
+       {{"lights", 1}, {"zpass", 1}},
+       {},
+       nearPlaneCamera()},
+      {"zfail-near-plane",
+       "the same view with z-fail: nothing behind the surface is clipped",
+       {{"lights", 1}},
+       {},
+       nearPlaneCamera()},
+      {"zfail-no-caps",
+       "z-fail counting the sides alone: an open volume's count is off",
+       {{"lights", 1}, {"caps", 0}}},
+      {"zfail-finite-far",
+       "z-fail with a finite far plane: it clips the volumes' far ends, their exits are lost",
+       {{"lights", 1}},
+       {},
+       finiteFarCamera()},
+      {"depth-clamp",
+       "the same finite far plane with depth clamping: the far ends are kept",
+       {{"lights", 1}, {"depth-clamp", 1}},
+       clamp,
+       finiteFarCamera()},
+      {"orthographic",
+       "a parallel view: volumes pushed past the scene, depth-clamped",
+       {{"lights", 1}, {"depth-clamp", 1}},
+       clamp,
+       orthographicCamera()},
+      {"directional",
+       "a directional light: the sides meet at one point at infinity",
+       {{"lights", 1}, {"directional", 1}}},
+      {"eye-inside",
+       "the eye inside the cube's volume: z-fail needs no correction",
+       {{"lights", 1}},
+       {},
+       eyeInsideCamera()},
+      {"coloured-lights", "three coloured lights added over the ambient pass", {}},
+      {"show-volumes", "the volumes translucently, the silhouettes as lines", {{"show", 1}}},
+  };
+  info.sceneLightOption = "last";
+  info.shadows = true;
+  info.passes = {"ambient", "volumes", "lit", "show-volumes", "silhouettes"};
+  info.camera = pinfCamera();
+  info.reversedDepth = true;  // a float depth buffer, reversed, where the driver has clip control
+  return info;
+}
 
 }  // namespace
 

@@ -201,6 +201,23 @@ TEST(OrbitCameraOf, RefusesWhatAnOrbitCameraCannotBe) {
   EXPECT_THROW(orbitCameraOf(c), std::invalid_argument) << "straight above: +y cannot be up";
 }
 
+// An orbit camera placed by its eye sees from that eye towards the target, whichever quadrant and
+// height the eye is in, and leaves the rest of the camera at its defaults.
+TEST(OrbitCameraFrom, SeesFromTheEyeTowardsTheTarget) {
+  const glm::vec3 target(0.5f, 1.0f, -1.0f);
+  for (const glm::vec3 eye : {glm::vec3(3.0f, -2.0f, -4.0f), glm::vec3(-2.0f, 4.0f, 3.0f),
+                              glm::vec3(-1.0f, 0.2f, -6.0f), glm::vec3(4.0f, 1.0f, 0.5f)}) {
+    const OrbitCamera o = orbitCameraFrom(eye, target);
+    EXPECT_NEAR(glm::length(o.eye() - eye), 0.0f, 1e-5f) << eye.x << " " << eye.y << " " << eye.z;
+    const glm::mat4 expected = glm::lookAt(eye, target, glm::vec3(0, 1, 0));
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) EXPECT_NEAR(o.view()[i][j], expected[i][j], 1e-5f) << i << "," << j;
+    EXPECT_EQ(o.target, target);
+    EXPECT_FLOAT_EQ(o.fovyDeg, OrbitCamera{}.fovyDeg);
+    EXPECT_FLOAT_EQ(o.farPlane, OrbitCamera{}.farPlane);
+  }
+}
+
 TEST(ShaderLog, MesaAndNvidiaLinesBecomeFileLine) {
   EXPECT_EQ(formatCompileLog("s.frag", "0:12(5): error: `x' undeclared\n0:12(5): error: more\n"),
             "s.frag:12: error: `x' undeclared (and 1 more)");
