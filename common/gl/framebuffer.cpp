@@ -81,28 +81,36 @@ Image readColourPixels(GLuint framebuffer, int width, int height) {
   return image;
 }
 
+Image readStencilPixels(GLuint framebuffer, int width, int height) {
+  Image image(width, height, 1);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, image.pixels.data());
+  flipRows(image);
+  return image;
+}
+
+std::vector<float> readDepthPixels(GLuint framebuffer, int width, int height) {
+  std::vector<float> depth(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  const auto row = static_cast<std::ptrdiff_t>(width);
+  for (int y = 0; y < height / 2; ++y)
+    std::swap_ranges(depth.begin() + y * row, depth.begin() + (y + 1) * row, depth.end() - (y + 1) * row);
+  return depth;
+}
+
 Image Framebuffer::readColour() const {
   return readColourPixels(fbo_, width_, height_);
 }
 
 Image Framebuffer::readStencil() const {
-  Image image(width_, height_, 1);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width_, height_, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, image.pixels.data());
-  flipRows(image);
-  return image;
+  return readStencilPixels(fbo_, width_, height_);
 }
 
 std::vector<float> Framebuffer::readDepth() const {
-  std::vector<float> depth(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
-  const auto row = static_cast<std::ptrdiff_t>(width_);
-  for (int y = 0; y < height_ / 2; ++y)
-    std::swap_ranges(depth.begin() + y * row, depth.begin() + (y + 1) * row, depth.end() - (y + 1) * row);
-  return depth;
+  return readDepthPixels(fbo_, width_, height_);
 }
 
 }  // namespace stencil

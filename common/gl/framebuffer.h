@@ -12,6 +12,12 @@ namespace stencil {
 
 // Reads the colour of any framebuffer (0: the window's), RGBA, top row first, opaque.
 Image readColourPixels(GLuint framebuffer, int width, int height);
+// Reads a framebuffer's stencil, one byte per pixel, top row first.
+Image readStencilPixels(GLuint framebuffer, int width, int height);
+// Reads a framebuffer's depth as window depths in [0, 1] (any depth format), width x height
+// floats, top row first.
+std::vector<float> readDepthPixels(GLuint framebuffer, int width, int height);
+// The three readers bind `framebuffer` for reading and set GL_PACK_ALIGNMENT, and leave both so.
 
 // The depth buffer's format. Fixed24: GL_DEPTH24_STENCIL8, steps of 2^-24 over [0, 1], every
 // lesson's default. Float32: GL_DEPTH32F_STENCIL8 (core since 3.0), a float per pixel, whose

@@ -90,7 +90,7 @@ OrbitCamera orbitCameraOf(const SceneCamera& c) {
 }
 
 Frame::Frame(double t, glm::ivec2 s, const OrbitCamera& camera, const std::vector<Option>& options,
-             PassRecorder& recorder, const GlFeatures& f, bool reversed)
+             PassRecorder& recorder, const GlFeatures& f, bool reversed, unsigned framebuffer)
     : time(t),
       size(s),
       view(camera.view()),
@@ -99,7 +99,8 @@ Frame::Frame(double t, glm::ivec2 s, const OrbitCamera& camera, const std::vecto
       features(f),
       reversedDepth(reversed),
       options_(options),
-      recorder_(recorder) {}
+      recorder_(recorder),
+      framebuffer_(framebuffer) {}
 
 int Frame::option(std::string_view name) const {
   for (const Option& o : options_)
@@ -124,7 +125,14 @@ void Frame::count(std::string_view name, std::uint64_t amount) {
 void Frame::shadowMask(std::string_view name) {
   if (name.empty() || name.find_first_of("/\\") != std::string_view::npos || name.front() == '.')
     throw std::logic_error("shadow mask name '" + std::string(name) + "' is not a plain file name");
-  if (shadowMaskWriter_) shadowMaskWriter_(name);
+  if (!shadowMaskWriter_) return;
+  // The writer reads the framework's stencil; the lesson's read binding and pack alignment stay.
+  GLint read = 0, packAlignment = 4;
+  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
+  glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment);
+  shadowMaskWriter_(name);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read));
+  glPixelStorei(GL_PACK_ALIGNMENT, packAlignment);
 }
 
 // ---- session --------------------------------------------------------------------------
@@ -185,9 +193,9 @@ void Session::resize(int width, int height) {
   makeFramebuffer(width, height);
 }
 
-void Session::renderFrame(double time, FrameRequest request) {
-  framebuffer->bind();
-  // Every frame starts from GL's default state, so any frame can be reproduced alone.
+void resetFrameState(unsigned framebuffer, glm::ivec2 size, const GlFeatures& features) {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glViewport(0, 0, size.x, size.y);
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
@@ -200,11 +208,15 @@ void Session::renderFrame(double time, FrameRequest request) {
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glDepthFunc(GL_LESS);
   glClearDepth(1.0);
-  if (hasFeature(context->features(), Feature::ClipControl))
+  if (hasFeature(features, Feature::ClipControl))
     glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);  // GL's default clip-space depth
+}
+
+void Session::renderFrame(double time, FrameRequest request) {
+  const glm::ivec2 size{framebuffer->width(), framebuffer->height()};
+  resetFrameState(framebuffer->id(), size, context->features());
   recorder->beginFrame(request);
-  Frame frame(time, {framebuffer->width(), framebuffer->height()}, camera, options, *recorder,
-              context->features(), reversedDepth);
+  Frame frame(time, size, camera, options, *recorder, context->features(), reversedDepth, framebuffer->id());
   if (shadowMaskHook)
     frame.setShadowMaskWriter(shadowMaskHook);
   else if (commandLine.maskOut && saveShadowMasks)

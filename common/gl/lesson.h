@@ -117,7 +117,7 @@ class PassRecorder;
 class Frame {
  public:
   Frame(double time, glm::ivec2 size, const OrbitCamera&, const std::vector<Option>&, PassRecorder&,
-        const GlFeatures&, bool reversedDepth = false);
+        const GlFeatures&, bool reversedDepth = false, unsigned framebuffer = 0);
 
   const double time;  // seconds; every animation is a function of it
   const glm::ivec2 size;
@@ -130,10 +130,20 @@ class Frame {
   // (LessonInfo::reversedDepth, and the driver has clip control); false: 24-bit, GL's mapping.
   const bool reversedDepth;
 
+  // The framework's framebuffer (a GL framebuffer name), size wide and high, with the verified
+  // stencil: the one render starts with bound, and the one the finished frame is read from
+  // (--out, --stencil-out, goldens, the window). A lesson that draws passes into a target of
+  // its own binds this one again to finish the frame.
+  unsigned framebuffer() const { return framebuffer_; }
+
   int option(std::string_view name) const;  // unknown names throw: a typo is a bug
   bool on(std::string_view name) const { return option(name) != 0; }
   // Marks the end of a named pass. A pass the frame repeats may say which repeat it is in
   // `detail` ("light 2", "level 3"): the window's pass stepper and --stats show it beside the name.
+  // The pass's snapshot (the pass stepper, --passes, the docs' figures) shows the framebuffer
+  // bound for drawing now, read at the frame's size, if its colour, depth and stencil can all be
+  // read (a read buffer, a depth and a stencil attachment); else framebuffer(). It changes no GL
+  // binding: the draw and read framebuffers, the viewport and the pack alignment stay as they are.
   void pass(std::string_view name, std::string_view detail = {});
   // Adds to a named count of the lesson's own (e.g. "scene_renderings"), reported per frame
   // under "counts" in --stats: work that draw calls and triangles do not show.
@@ -142,11 +152,11 @@ class Frame {
   // GL_SAMPLES_PASSED queries of its own (GL allows one active query per target). The fragments
   // draw produces are left out of the pass's samples_passed.
   void ownOcclusionQueries(const std::function<void()>& draw);
-  // Saves the stencil as it is now as the shadow mask NAME.png under --mask-out DIR (white where
+  // Saves framebuffer()'s stencil as it is now as the shadow mask NAME.png under --mask-out DIR (white where
   // the stencil is 0, lit; black elsewhere), in the last frame of a headless run or of a window
   // run with --frames; does nothing otherwise. Scene lessons call it once per light with "light-<i>", i the
   // light's index in the scene, after that light's shadow is in the stencil: tests compare it with a ray
-  // cast.
+  // cast. Like pass, it changes no GL binding.
   void shadowMask(std::string_view name);
 
   // How the session saves shadow masks; empty when they are not wanted.
@@ -161,8 +171,23 @@ class Frame {
  private:
   const std::vector<Option>& options_;
   PassRecorder& recorder_;
+  unsigned framebuffer_;
   ShadowMaskWriter shadowMaskWriter_;
 };
+
+// The GL state every frame starts from, so that any frame can be reproduced alone; the framework
+// calls it before each Lesson::render. It sets:
+//   framebuffer bound for drawing and reading (GL_FRAMEBUFFER), the viewport its whole size;
+//   GL_STENCIL_TEST, GL_DEPTH_TEST, GL_BLEND, GL_CULL_FACE and GL_SCISSOR_TEST disabled;
+//   glColorMask all GL_TRUE, glDepthMask GL_TRUE, glStencilMask 0xFF;
+//   glStencilFunc(GL_ALWAYS, 0, 0xFF), glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+//   glDepthFunc(GL_LESS), glClearDepth(1);
+//   glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE) where the driver has clip control.
+// Everything else stays as the last frame left it: the clear colour and clear stencil, the cull
+// face and front face, blend function, polygon offset, the bound program, vertex array and
+// textures. A lesson sets those itself before it relies on them. framebuffer is a GL name of a
+// framebuffer width x height.
+void resetFrameState(unsigned framebuffer, glm::ivec2 size, const GlFeatures&);
 
 // What --oracle needs to check a lesson's shadows against a CPU ray cast of the same scene
 // (geometry/shadow_oracle.h): the scene as the lesson drew it in that frame, the light, and
@@ -181,7 +206,9 @@ struct ShadowCheck {
 class Lesson {
  public:
   virtual ~Lesson() = default;
-  // Called with the lesson's framebuffer bound, cleared to nothing: the lesson clears.
+  // Draws one frame into Frame::framebuffer(). It is called with the GL state resetFrameState
+  // leaves (that framebuffer bound, the tests off, every write on: the list is there) and the
+  // buffers holding what the last frame left in them: the lesson clears.
   virtual void render(Frame&) = 0;
   // The frame's shadows as an oracle can check them; nothing where the current options make
   // no shadow claim (a variant that shows an artifact, say).

@@ -17,6 +17,25 @@ std::uint64_t queryResult(unsigned query) {
   return value;
 }
 
+// Whether a snapshot can read colour, depth and stencil from `framebuffer` (a GL name; 0, the
+// window's, never: the lesson draws off screen). Binds it for reading; the caller restores.
+bool readableWhole(GLuint framebuffer) {
+  if (framebuffer == 0) return false;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+  if (glCheckFramebufferStatus(GL_READ_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) return false;
+  GLint readBuffer = GL_NONE;
+  glGetIntegerv(GL_READ_BUFFER, &readBuffer);
+  if (readBuffer == GL_NONE) return false;
+  const auto attached = [](GLenum attachment) {
+    GLint type = GL_NONE;
+    glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, attachment,
+                                          GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    return type != GL_NONE;
+  };
+  return attached(static_cast<GLenum>(readBuffer)) && attached(GL_DEPTH_ATTACHMENT) &&
+         attached(GL_STENCIL_ATTACHMENT);
+}
+
 }  // namespace
 
 void countDraw(std::uint64_t triangles) {
@@ -99,14 +118,27 @@ void PassRecorder::pass(std::string_view name, std::string_view detail) {
   const std::size_t index = stats_.size();
   stats_.push_back(current_);
   pausedSamples_.push_back(currentPaused_);
-  if (request_.captureAll || request_.captureOnly == index)
+  if (request_.captureAll || request_.captureOnly == index) {
+    // What the lesson has bound is put back afterwards: reading binds the read framebuffer and
+    // sets the pack alignment, and nothing here touches the draw binding or the viewport.
+    GLint draw = 0, read = 0, packAlignment = 4;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
+    glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment);
+    const GLuint source =
+        readableWhole(static_cast<GLuint>(draw)) ? static_cast<GLuint>(draw) : framebuffer_.id();
+    const int w = framebuffer_.width(), h = framebuffer_.height();
     snapshots_.push_back({.pass = current_.name,
                           .label = current_.label,
                           .index = index,
-                          .colour = framebuffer_.readColour(),
-                          .stencil = framebuffer_.readStencil(),
-                          .depth = framebuffer_.readDepth()});
-  framebuffer_.bind();  // reading may have changed the read binding; keep drawing into ours
+                          .framebuffer = source,
+                          .colour = readColourPixels(source, w, h),
+                          .stencil = readStencilPixels(source, w, h),
+                          .depth = readDepthPixels(source, w, h)});
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read));
+    glPixelStorei(GL_PACK_ALIGNMENT, packAlignment);
+    checkGlErrors("while reading the snapshot of pass '" + current_.name + "'");
+  }
   beginPass();
 }
 

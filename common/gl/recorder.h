@@ -1,7 +1,8 @@
 // The pass recorder: a lesson marks the end of each named pass; the recorder counts draw
 // calls and triangles, runs occlusion/timer/statistics queries around each pass for
-// --stats, checks for GL errors, and captures colour and stencil after the passes asked
-// for. Tests, docs figures and the window's pass stepping all use this one mechanism.
+// --stats, checks for GL errors, and captures colour, depth and stencil after the passes
+// asked for, from the framebuffer the pass drew into. Tests, docs figures and the window's
+// pass stepping all use this one mechanism. It never changes a binding the lesson made.
 #pragma once
 #include <chrono>
 #include <cstdint>
@@ -36,6 +37,9 @@ struct Snapshot {
   std::string pass;     // the declared name
   std::string label;    // PassStats::label
   std::size_t index{};  // the pass's index in the frame
+  // The framebuffer it was read from (a GL name): the one bound for drawing when the pass ended,
+  // or the framework's where that one could not be read (PassRecorder::pass).
+  unsigned framebuffer = 0;
   Image colour, stencil;
   std::vector<float> depth;  // window depths, top row first (Framebuffer::readDepth)
 };
@@ -53,6 +57,11 @@ class PassRecorder {
 
   void beginFrame(FrameRequest);
   // The end of a named pass; detail (optional) says which of its repeats it was ("light 2").
+  // A snapshot, when the frame asks for one, is read from the framebuffer bound for drawing now
+  // if it can be read whole (complete, a read buffer with a colour attachment, a depth and a
+  // stencil attachment), at the framework framebuffer's size; otherwise from the framework's.
+  // The draw and read framebuffer bindings, the viewport and GL_PACK_ALIGNMENT are left as they
+  // were found.
   void pass(std::string_view name, std::string_view detail = {});
   void count(std::string_view name, std::uint64_t amount);  // a lesson's own count (Frame::count)
   // Ends the current pass's occlusion query early, keeping what it counted so far, and begins it

@@ -28,9 +28,11 @@ class Program {
   Program(const Program&) = delete;
   Program& operator=(const Program&) = delete;
 
-  void use() const;
+  void use() const;  // glUseProgram
   GLuint id() const { return id_; }
-  // Setters use the program first. Unknown names are ignored, as GL does (-1 location).
+  // Each setter binds the program first (glUseProgram, then glUniform*) and leaves it bound, so
+  // the draw that follows a set draws with this program: in plain GL, bind the program before
+  // drawing. Unknown names are ignored, as GL does (-1 location).
   void set(const char* name, const glm::mat4&) const;
   void set(const char* name, const glm::vec4&) const;
   void set(const char* name, const glm::vec3&) const;

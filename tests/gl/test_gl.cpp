@@ -138,6 +138,93 @@ TEST_F(Gl, PassesAreLabelledAsTheyRan) {
   EXPECT_EQ(recorder.snapshots()[0].label, "reflection #1");
 }
 
+// A pass drawn into a framebuffer of the lesson's own is what its snapshot shows: the colour,
+// stencil and depth drawn there, not the framework's untouched framebuffer.
+TEST_F(Gl, APassDrawnOffScreenIsWhatItsSnapshotShows) {
+  Framebuffer framework(32, 16), own(32, 16);
+  Program flat("common/flat.vert", "common/flat.frag");
+  GpuMesh quad(makeScreenQuad());
+  PassRecorder recorder({"own", "framework"}, framework, context->features());
+  framework.bind();
+  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  recorder.beginFrame({.measure = false, .captureAll = true, .captureOnly = {}});
+  own.bind();
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 7, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  flat.set("transform", glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -0.5f)));  // window depth 0.25
+  flat.set("colour", glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
+  quad.draw();
+  recorder.pass("own");
+  framework.bind();
+  recorder.pass("framework");
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_STENCIL_TEST);
+  recorder.endFrame();
+
+  ASSERT_EQ(recorder.snapshots().size(), 2u);
+  const Snapshot& drawn = recorder.snapshots()[0];
+  EXPECT_EQ(drawn.framebuffer, own.id());
+  EXPECT_EQ(drawn.colour.at(5, 5)[0], 255);
+  EXPECT_EQ(drawn.colour.at(5, 5)[1], 0);
+  EXPECT_EQ(drawn.stencil.at(5, 5)[0], 7);
+  EXPECT_NEAR(drawn.depth.at(5 * 32 + 5), 0.25f, 1e-6f);
+  const Snapshot& untouched = recorder.snapshots()[1];  // the framework's: cleared, nothing drawn
+  EXPECT_EQ(untouched.framebuffer, framework.id());
+  EXPECT_EQ(untouched.colour.at(5, 5)[0], 0);
+  EXPECT_EQ(untouched.stencil.at(5, 5)[0], 0);
+  EXPECT_EQ(untouched.depth.at(5 * 32 + 5), 1.0f);
+}
+
+// A framebuffer whose stencil (or colour) cannot be read is not pictured: the snapshot is the
+// framework's.
+TEST_F(Gl, AFramebufferThatCannotBeReadWholeLeavesTheSnapshotToTheFrameworks) {
+  Framebuffer framework(16, 16), noStencil(16, 16, 0);
+  PassRecorder recorder({"only"}, framework, context->features());
+  recorder.beginFrame({.measure = false, .captureAll = true, .captureOnly = {}});
+  noStencil.bind();
+  recorder.pass("only");
+  recorder.endFrame();
+  ASSERT_EQ(recorder.snapshots().size(), 1u);
+  EXPECT_EQ(recorder.snapshots()[0].framebuffer, framework.id());
+}
+
+// Ending a pass, measured and captured, leaves the lesson's bindings as they were: the draw and
+// read framebuffers, the viewport and the pack alignment.
+TEST_F(Gl, APassLeavesTheBindingsAndViewportAsItFoundThem) {
+  Framebuffer framework(32, 16), own(32, 16), other(32, 16);
+  PassRecorder recorder({"first", "second"}, framework, context->features());
+  for (bool measure : {false, true}) {
+    recorder.beginFrame({.measure = measure, .captureAll = true, .captureOnly = {}});
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, own.id());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, other.id());
+    glViewport(3, 4, 20, 10);
+    glPixelStorei(GL_PACK_ALIGNMENT, 2);
+    for (const char* name : {"first", "second"}) {
+      recorder.pass(name);
+      GLint draw = 0, read = 0, viewport[4] = {}, alignment = 0;
+      glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw);
+      glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
+      glGetIntegerv(GL_VIEWPORT, viewport);
+      glGetIntegerv(GL_PACK_ALIGNMENT, &alignment);
+      EXPECT_EQ(static_cast<GLuint>(draw), own.id()) << name << (measure ? " measured" : "");
+      EXPECT_EQ(static_cast<GLuint>(read), other.id()) << name;
+      EXPECT_EQ(viewport[0], 3);
+      EXPECT_EQ(viewport[1], 4);
+      EXPECT_EQ(viewport[2], 20);
+      EXPECT_EQ(viewport[3], 10);
+      EXPECT_EQ(alignment, 2);
+    }
+    recorder.endFrame();
+    EXPECT_EQ(recorder.snapshots().size(), 2u);
+  }
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+}
+
 // A new framebuffer's first measured frame: its GPU time is a real figure that fits inside the
 // pass's CPU wall time (which ends after glFinish), not the timer's raw timestamp.
 TEST_F(Gl, TheFirstFramesGpuTimeFitsInsideItsCpuTime) {

@@ -5,9 +5,13 @@
 // demo's picture; the pass counts are the formulas' (two surfaces of four passes; Goldfeather n c select, n c
 // (n - 1) parity, 8 parity bits per push to the far plane; layered k select, k n parity, k the largest depth
 // complexity of the product's target faces; SCS two passes per entry of a subtraction sequence of n(n - 1) +
-// 1); the occlusion-query early stop tries one empty layer more and changes nothing in the picture.
+// 1); the occlusion-query early stop tries one empty layer more and changes nothing in the picture;
+// the pass snapshots of Goldfeather and SCS show the work buffer they draw into.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -175,6 +179,82 @@ TEST(Csg, OcclusionQueriesStopAtTheFirstEmptyLayer) {
   EXPECT_EQ(queried->count("select_passes"), counted->count("layers_counted") + 1);
   EXPECT_EQ(queried->colour.pixels, counted->colour.pixels);
   expectRayCastAgrees(*queried, "layered with queries");
+}
+
+namespace {
+
+// The snapshots --passes writes for a variant (NN-pass.png), the final frame beside them.
+struct PassPictures {
+  std::vector<Image> passes;
+  Image frame;
+};
+std::optional<PassPictures> passPictures(const std::string& variant, const std::vector<std::string>& names) {
+  const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "stencil-14-csg" / (std::string(test->name()) + "-" + variant);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "passes");
+  const std::string command =
+      std::string(LESSON_14) + " --headless --quiet --size 320x240 --time 1 --variant " + variant +
+      " --passes " + (dir / "passes").string() + " --out " + (dir / "frame.png").string();
+  const int status = std::system(command.c_str());
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 77) return std::nullopt;
+  EXPECT_EQ(status, 0) << command;
+  PassPictures p{{}, readPng(dir / "frame.png", 4)};
+  for (const std::string& name : names) p.passes.push_back(readPng(dir / "passes" / (name + ".png"), 4));
+  return p;
+}
+
+// Pixels that are not the background (the frame's top left corner, where no solid reaches).
+std::vector<bool> drawn(const Image& image, const Image& background) {
+  std::vector<bool> out(image.pixels.size() / 4);
+  for (std::size_t i = 0; i < out.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(int(image.pixels[4 * i + c]) - int(background.pixels[c])) > 2) out[i] = true;
+  return out;
+}
+long long countOf(const std::vector<bool>& v) {
+  return std::count(v.begin(), v.end(), true);
+}
+
+}  // namespace
+
+// Goldfeather's select and parity passes draw into the work buffer, and their snapshots show it:
+// A's front faces lit, then only the part outside B (trimmed away pixels back to the background),
+// which is where the merge puts A in the frame.
+TEST(Csg, GoldfeathersPassesShowTheWorkBuffer) {
+  const auto p = passPictures("goldfeather", {"01-select", "02-parity", "03-merge"});
+  if (!p) GTEST_SKIP() << "no GL context";
+  const std::vector<bool> selected = drawn(p->passes[0], p->frame), trimmed = drawn(p->passes[1], p->frame),
+                          merged = drawn(p->passes[2], p->frame);
+  EXPECT_GT(countOf(selected), 5000);                     // A's front faces
+  EXPECT_GT(countOf(trimmed), 1000);                      // A's front faces outside B
+  EXPECT_LT(countOf(trimmed), countOf(selected) - 1000);  // the bite B takes, trimmed away
+  long long trimmedNotSelected = 0, trimmedNotMerged = 0;
+  for (std::size_t i = 0; i < trimmed.size(); ++i) {
+    trimmedNotSelected += trimmed[i] && !selected[i];
+    trimmedNotMerged += trimmed[i] != merged[i];
+  }
+  EXPECT_EQ(trimmedNotSelected, 0);
+  EXPECT_LT(trimmedNotMerged, 50);  // the merge draws where the trimmed depth is: edges aside
+}
+
+// SCS's intersect and subtract passes show the surface in the work buffer as it moves; the merge
+// shows the frame.
+TEST(Csg, ScsPassesShowTheWorkBuffer) {
+  const auto p =
+      passPictures("scs-rounded-cube", {"01-intersect", "02-subtract", "03-intersect", "04-merge"});
+  if (!p) GTEST_SKIP() << "no GL context";
+  const std::vector<bool> entered = drawn(p->passes[0], p->frame), clipped = drawn(p->passes[2], p->frame),
+                          merged = drawn(p->passes[3], p->frame);
+  EXPECT_GT(countOf(entered), 5000);  // cube * sphere's near surface
+  long long differ = 0;
+  for (std::size_t i = 0; i < clipped.size(); ++i) differ += clipped[i] != merged[i];
+  EXPECT_LT(differ, 50);
+  std::size_t moved = 0;  // the subtraction changed the surface where the cylinders cut it
+  for (std::size_t i = 0; i < p->passes[0].pixels.size(); ++i)
+    moved += p->passes[0].pixels[i] != p->passes[1].pixels[i];
+  EXPECT_GT(moved, 1000u);
 }
 
 TEST(Csg, SceneFilesAreTheRayCast) {
