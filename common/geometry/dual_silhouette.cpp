@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <glm/geometric.hpp>
 
 namespace stencil {
@@ -90,8 +91,28 @@ bool DualSilhouettes::faces(std::int32_t f, const glm::vec4& light) const {
   return (x + y) + z > 0.0f;
 }
 
+namespace {
+
+// The same four floats, bit for bit (so -0 differs from 0 and a NaN from itself: never reused).
+bool sameBits(const glm::vec4& a, const glm::vec4& b) {
+  return std::memcmp(&a, &b, sizeof a) == 0 && a == b;
+}
+
+}  // namespace
+
 void DualSilhouettes::query(const glm::vec4& light, std::vector<SilhouetteEdge>& out) const {
+  if (cached_ && sameBits(light, cachedLight_)) {
+    stats_ = {0, 0, true};
+    ++queriesReused_;
+    out = cachedEdges_;
+    return;
+  }
+  descend(light, out);
+}
+
+void DualSilhouettes::descend(const glm::vec4& light, std::vector<SilhouetteEdge>& out) const {
   stats_ = {};
+  ++queriesRun_;
   out.clear();
   found_.clear();
   // The hyperplane P.L = 0 misses a box when P.L keeps one sign over it, by more than the rounding
@@ -129,6 +150,9 @@ void DualSilhouettes::query(const glm::vec4& light, std::vector<SilhouetteEdge>&
     const SilhouetteEdge& ends = caster_.edgeEnds[e];
     out.push_back(faces(ef.face0, light) ? ends : SilhouetteEdge{ends.v1, ends.v0});
   }
+  cached_ = true;
+  cachedLight_ = light;
+  cachedEdges_ = out;
 }
 
 }  // namespace stencil

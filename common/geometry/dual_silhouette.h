@@ -34,14 +34,25 @@ class DualSilhouettes {
 
   // The possible silhouette edges for a homogeneous light in the caster's space (w = 1 a point,
   // w = 0 the direction towards a directional light), as silhouetteEdges(caster, light) gives them.
-  // `out` is cleared first.
+  // `out` is replaced. The tree is descended only when the light differs from the last one
+  // descended for, bit for bit in all four coordinates: a light given in the caster's object space
+  // changes exactly when the light or the caster moves, so a still pair costs a copy of the last
+  // answer, not a query (Wallner, section 4: the query reruns on relative motion only).
   void query(const glm::vec4& light, std::vector<SilhouetteEdge>& out) const;
+  // The same answer, always by a descent of the tree (which becomes the answer query() reuses):
+  // what a light that moved before every call costs, for benchmarks.
+  void descend(const glm::vec4& light, std::vector<SilhouetteEdge>& out) const;
 
-  // What the last query did: cells visited and edges tested exactly.
+  // What the last call did: cells visited and edges tested exactly (both 0 when it reused the
+  // previous answer, which `reused` says).
   struct QueryStats {
     std::size_t cellsVisited = 0, edgesTested = 0;
+    bool reused = false;
   };
   const QueryStats& lastQuery() const { return stats_; }
+  // How many calls descended the tree, and how many reused the previous answer, since it was built.
+  std::size_t queriesRun() const { return queriesRun_; }
+  std::size_t queriesReused() const { return queriesReused_; }
   std::size_t cellCount() const { return cells_.size(); }
 
  private:
@@ -63,6 +74,11 @@ class DualSilhouettes {
   int maxDepth_;
   mutable QueryStats stats_;
   mutable std::vector<std::uint32_t> found_;
+  // The last light descended for and its answer: the cache query() keys on.
+  mutable bool cached_ = false;
+  mutable glm::vec4 cachedLight_{0.0f};
+  mutable std::vector<SilhouetteEdge> cachedEdges_;
+  mutable std::size_t queriesRun_ = 0, queriesReused_ = 0;
 };
 
 }  // namespace stencil

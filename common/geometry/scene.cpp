@@ -699,7 +699,7 @@ void readCamera(LineReader& line, SceneCamera& camera) {
 
 // `light sun LAT LON YYYY-MM-DD HH:MM ZONE`: the place, the local date and clock, and the zone's
 // hours from UTC; the light is directional, towards where the sun then stands (solar.h).
-void readSun(LineReader& line, SceneLight& light) {
+void readSun(LineReader& line, SceneLight& light, bool sunMayBeDown) {
   SunLight sun;
   sun.place.latitudeDeg = line.number("the sun's latitude in degrees (north positive)");
   if (std::abs(sun.place.latitudeDeg) > 90.0)
@@ -723,21 +723,21 @@ void readSun(LineReader& line, SceneLight& light) {
   if (const std::string problem = civilTimeProblem(sun.time); !problem.empty())
     line.fail("expected a date and time that exist: " + problem);
   const SunPosition p = sunPosition(sun.place, sun.time);
-  if (p.elevationDeg <= 0.0)
+  if (p.elevationDeg <= 0.0 && !sunMayBeDown)
     line.fail("the sun is below the horizon then (elevation " + LineReader::format(float(p.elevationDeg)) +
               " degrees): it lights nothing");
   light.position = glm::vec4(sunDirection(p.elevationDeg, p.azimuthDeg), 0.0f);
   light.sun = sun;
 }
 
-void readLight(LineReader& line, SceneLight& light) {
+void readLight(LineReader& line, SceneLight& light, bool sunMayBeDown) {
   const std::string type = line.word("the light's type (point, directional or sun)");
   if (type == "point")
     light.position = glm::vec4(line.vec3("the light's position"), 1.0f);
   else if (type == "directional")
     light.position = glm::vec4(line.direction("the direction towards the light"), 0.0f);
   else if (type == "sun")
-    readSun(line, light);
+    readSun(line, light, sunMayBeDown);
   else
     line.fail("expected the light's type (point, directional or sun), got " + quote(type));
   std::set<std::string> seen;
@@ -833,7 +833,8 @@ void checkCsg(Scene& scene, const std::string& file, std::size_t column) {
 
 }  // namespace
 
-Scene parseScene(std::string_view text, const std::filesystem::path& file, const ObjFileReader& readObj) {
+Scene parseScene(std::string_view text, const std::filesystem::path& file, const ObjFileReader& readObj,
+                 bool sunMayBeDown) {
   Scene scene;
   scene.file = file;
   const std::string name = file.string();
@@ -871,7 +872,7 @@ Scene parseScene(std::string_view text, const std::filesystem::path& file, const
       if (scene.lights.size() == kMaxSceneLights)
         line.fail("more than " + std::to_string(kMaxSceneLights) + " lights; a scene has at most " +
                   std::to_string(kMaxSceneLights));
-      readLight(line, scene.lights.emplace_back());
+      readLight(line, scene.lights.emplace_back(), sunMayBeDown);
       if (scene.lights.back().sun && std::count_if(scene.lights.begin(), scene.lights.end(),
                                                    [](const SceneLight& l) { return bool(l.sun); }) > 1)
         line.fail("a second sun; a scene has one sun (--shadow-hours moves it)");
@@ -941,14 +942,14 @@ Scene parseScene(std::string_view text, const std::filesystem::path& file, const
   return scene;
 }
 
-Scene loadScene(const std::filesystem::path& file) {
+Scene loadScene(const std::filesystem::path& file, bool sunMayBeDown) {
   std::string text;
   try {
     text = readFile(file, kMaxSceneFileBytes);
   } catch (const std::runtime_error& e) {
     throw SceneError(file.string() + ": cannot open the scene file: " + e.what());
   }
-  return parseScene(text, file);
+  return parseScene(text, file, readObjFile, sunMayBeDown);
 }
 
 SolidsSeen solidsSeenFrom(const Scene& scene, const std::vector<glm::mat4>& models, const glm::vec3& eye) {

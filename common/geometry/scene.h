@@ -178,11 +178,13 @@ using ObjFileReader = std::function<std::string(const std::filesystem::path&)>;
 // edges' problem. A csg line is checked against the objects: an unknown name or a syntax error
 // (with its column in the line), a sum of products past kMaxSceneCsgProducts, or an object it
 // names that is not a closed solid is an error at that line. Returns the scene, every caster
-// prepared.
-Scene loadScene(const std::filesystem::path& file);
+// prepared. A sun light below the horizon at the file's time is an error (it lights nothing),
+// unless sunMayBeDown: a shadow profile (--shadow-hours) moves the sun through a span of the day
+// and takes the steps at night as night; the light then points where the sun stands, below.
+Scene loadScene(const std::filesystem::path& file, bool sunMayBeDown = false);
 // The same for a scene's text; `file` names it in messages and locates its OBJ files, which
 // `readObj` reads.
 Scene parseScene(std::string_view text, const std::filesystem::path& file,
-                 const ObjFileReader& readObj = readObjFile);
+                 const ObjFileReader& readObj = readObjFile, bool sunMayBeDown = false);
 
 }  // namespace stencil

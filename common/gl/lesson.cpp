@@ -502,7 +502,9 @@ int runHeadless(Session& s) {
 // --shadow-hours: the scene's (first) sun light moved through the span, the lesson made anew with
 // the sun where it stands at each step and one frame rendered; the sun's shadow mask (the stencil
 // once its shadow is in it: Frame::shadowMask("light-<i>")) counted per pixel. A step with the sun
-// at or below the horizon leaves every pixel in shadow. Wallner's shadow profile, section 8.
+// at or below the horizon is night: the sun casts no shadow then, and night is not shadow, so it
+// adds to no pixel's count (its --mask-out mask is all lit) and is counted apart, on stderr; the
+// legend's ramp runs over the daylight steps. Wallner's shadow profile, section 8.
 int runShadowHours(Session& s, Scene& scene, const LessonFactory& make) {
   const CommandLine& cl = s.commandLine;
   std::size_t sunIndex = scene.lights.size();
@@ -512,7 +514,7 @@ int runShadowHours(Session& s, Scene& scene, const LessonFactory& make) {
   const std::string maskName = "light-" + std::to_string(sunIndex);
   const int width = s.framebuffer->width(), height = s.framebuffer->height();
   std::vector<std::uint16_t> counts(static_cast<std::size_t>(width) * height, 0);
-  int steps = 0;
+  int steps = 0, nightSteps = 0;
   double totalMs = 0.0;
   for (int minutes = cl.shadowFrom; minutes <= cl.shadowTo; minutes += cl.shadowStep, ++steps) {
     CivilTime time = sun.time;
@@ -523,8 +525,11 @@ int runShadowHours(Session& s, Scene& scene, const LessonFactory& make) {
     std::snprintf(clock, sizeof clock, "%02d%02d", time.hour, time.minute);
     const SunPosition p = sunPosition(sun.place, time);
     Image mask(width, height, 1);  // 255 lit, 0 in shadow, as --mask-out writes them
+    std::fill(mask.pixels.begin(), mask.pixels.end(), std::uint8_t{255});  // night: no sun shadow
     double ms = 0.0;
-    if (p.elevationDeg > 0.0) {
+    const bool night = p.elevationDeg <= 0.0;
+    nightSteps += night ? 1 : 0;
+    if (!night) {
       scene.lights[sunIndex].position = glm::vec4(sunDirection(p.elevationDeg, p.azimuthDeg), 0.0f);
       s.lesson = make();
       bool seen = false;
@@ -556,17 +561,20 @@ int runShadowHours(Session& s, Scene& scene, const LessonFactory& make) {
                     "shadow-hours %02d:%02d: sun elevation %.2f, azimuth %.2f degrees; %zu of %zu pixels in "
                     "shadow; frame %.1f ms%s\n",
                     time.hour, time.minute, p.elevationDeg, p.azimuthDeg, shadowed, counts.size(), ms,
-                    p.elevationDeg > 0.0 ? "" : " (the sun is down: all shadow)");
+                    night ? " (night: the sun is down, no sun shadow; not counted as shadow)" : "");
       std::cerr << line;
     }
   }
-  writePng(*cl.shadowHours, shadowHoursPicture(counts, width, height, steps, cl.shadowStep));
+  writePng(*cl.shadowHours, shadowHoursPicture(counts, width, height, steps - nightSteps, cl.shadowStep));
   Image raw(width, height, 1);
   for (std::size_t i = 0; i < counts.size(); ++i) raw.pixels[i] = static_cast<std::uint8_t>(counts[i]);
   writePng(rawPathBeside(*cl.shadowHours), raw);
   if (!cl.quiet)
-    std::cerr << "shadow-hours: " << steps << " steps of " << cl.shadowStep << " min, " << totalMs / steps
-              << " ms a frame on average; " << cl.shadowHours->string() << " and its raw counts written\n";
+    std::cerr << "shadow-hours: " << steps << " steps of " << cl.shadowStep << " min, " << nightSteps
+              << " of them at night (the sun down: no sun shadow, not counted), "
+              << (steps > nightSteps ? totalMs / (steps - nightSteps) : 0.0)
+              << " ms a daylight frame on average; " << cl.shadowHours->string()
+              << " and its raw counts written\n";
   return 0;
 }
 
@@ -628,7 +636,7 @@ namespace {
 Scene readScene(const CommandLine& cl, LessonInfo& info) {
   Scene scene;
   try {
-    scene = loadScene(*cl.scene);
+    scene = loadScene(*cl.scene, cl.shadowHours.has_value());  // a profile may start or end at night
   } catch (const SceneError& e) {
     throw UsageError(e.what());
   }

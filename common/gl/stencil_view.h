@@ -66,8 +66,9 @@ Image countLegend(const std::vector<std::uint64_t>& histogram, int top, bool sat
 // ramp's top the largest value present (other than a saturated 255), and countLegend below.
 Image countPicture(const Image& stencil, bool saturates);
 
-// A shadow-hours map (--shadow-hours): counts[i] is how many of `steps` sun positions, stepMinutes
-// apart, left pixel i (top row first, width x height) in shadow. Each pixel in
+// A shadow-hours map (--shadow-hours): counts[i] is how many of `steps` sun positions above the
+// horizon (the daylight steps; night is not shadow), stepMinutes apart, left pixel i (top row
+// first, width x height) in shadow. Each pixel in
 // countColour(count, steps), and below, countLegend labelled in hours (count x stepMinutes / 60).
 Image shadowHoursPicture(const std::vector<std::uint16_t>& counts, int width, int height, int steps,
                          int stepMinutes);

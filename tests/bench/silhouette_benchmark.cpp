@@ -21,6 +21,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -125,11 +126,18 @@ constexpr LightCase lightCases[] = {{"near", {0.9f, 1.2f, 1.5f, 1.0f}},
                                     {"far", {30.0f, 40.0f, 50.0f, 1.0f}},
                                     {"directional", {3.0f, 4.0f, 5.0f, 0.0f}}};
 
-// The near light moved by a small step: turned 0.1 degrees about the y axis per call, so every
-// call queries again for a light a little off the last one (no result can be reused: the light
-// moved relative to the caster). 3600 steps make the whole turn.
-glm::vec4 steppedLight(std::size_t step) {
-  const float a = glm::radians(0.1f) * static_cast<float>(step % 3600);
+// The light's motion relative to the caster, for the near light: still (the same light in the
+// caster's space every call, so DualSilhouettes::query reuses its last answer), or turned about
+// the y axis by a fixed angle before every call (every call queries again).
+struct Motion {
+  const char* name;
+  float degreesPerCall;  // 0: still
+};
+constexpr Motion motions[] = {{"still", 0.0f}, {"turn0.1", 0.1f}, {"turn10", 10.0f}};
+
+// The near light after `step` calls turning it by `degrees` about the y axis.
+glm::vec4 turnedLight(std::size_t step, float degrees) {
+  const float a = glm::radians(std::fmod(degrees * static_cast<float>(step), 360.0f));
   const glm::vec4 p = lightCases[0].position;
   return {p.x * std::cos(a) + p.z * std::sin(a), p.y, -p.x * std::sin(a) + p.z * std::cos(a), 1.0f};
 }
@@ -195,33 +203,26 @@ void prepare(benchmark::State& state, const std::string& shape, const Size& size
   state.counters["triangles"] = static_cast<double>(c.mesh.triangleCount());
 }
 
-// Wallner's dual space: the hextree's query for the same light (the tree built once, outside).
-void dual(benchmark::State& state, const std::string& shape, const Size& size) {
-  const DualSilhouettes& tree = dualTree(shape, size);
-  std::vector<SilhouetteEdge> silhouette;
-  for (auto _ : state) {
-    tree.query(light, silhouette);
-    benchmark::DoNotOptimize(silhouette.data());
-  }
-  state.counters["triangles"] = static_cast<double>(silhouetteCaster(shape, size).faceCount());
-  state.counters["silhouette_edges"] = static_cast<double>(silhouette.size());
-  state.counters["cells_visited"] = static_cast<double>(tree.lastQuery().cellsVisited);
-  state.counters["edges_tested"] = static_cast<double>(tree.lastQuery().edgesTested);
-}
-
 // The brute force of part 1 (a SilhouetteCaster's two passes) and the dual-space query for one
-// light of lightCases, or (index 3) the stepped light.
+// light: lightCases[which] held still, each dual call a fresh descent of the tree (as if the light
+// had moved by a hair: the cost of one query); or, for which >= 3, the near light moving as
+// motions[which - 3] says, each dual call through DualSilhouettes::query and its cache.
 template <bool Dual>
 void byLight(benchmark::State& state, const std::string& shape, const Size& size, std::size_t which) {
   const SilhouetteCaster& c = silhouetteCaster(shape, size);
   const DualSilhouettes* tree = Dual ? &dualTree(shape, size) : nullptr;
+  const bool moving = which >= std::size(lightCases);
+  const float degrees = moving ? motions[which - std::size(lightCases)].degreesPerCall : 0.0f;
   std::vector<std::uint8_t> lit;
   std::vector<SilhouetteEdge> silhouette;
   std::size_t step = 0, edges = 0, calls = 0, tested = 0;
   for (auto _ : state) {
-    const glm::vec4 l = which < std::size(lightCases) ? lightCases[which].position : steppedLight(step++);
+    const glm::vec4 l = moving ? turnedLight(step++, degrees) : lightCases[which].position;
     if constexpr (Dual) {
-      tree->query(l, silhouette);
+      if (moving)
+        tree->query(l, silhouette);
+      else
+        tree->descend(l, silhouette);
     } else {
       facesLight(c, l, lit);
       silhouetteEdges(c, lit, silhouette);
@@ -255,6 +256,53 @@ void scanPrepared(benchmark::State& state, const std::string& shape, const Size&
   }
   state.SetBytesProcessed(state.iterations() * preparedBytesRead(c));
   state.counters["triangles"] = static_cast<double>(c.faceCount());
+}
+
+// The prepared extraction and the scan of its arrays timed in alternating batches within one
+// benchmark, each batch about 20 microseconds: both see the same load on a shared machine, and
+// at 1k triangles (a call of about 2 microseconds, the arrays in L1) no timer's resolution or
+// start-up enters. Counters: the median over batches of each one's time per call, the median of
+// the batches' ratios, and the ratio of the fastest batches (the machine at its quietest).
+void paired(benchmark::State& state, const std::string& shape, const Size& size) {
+  const SilhouetteCaster& c = silhouetteCaster(shape, size);
+  std::vector<std::uint8_t> lit;
+  std::vector<SilhouetteEdge> silhouette;
+  const std::size_t batch = std::max<std::size_t>(1, 10000 / c.faceCount());
+  std::vector<double> extraction, scanned, ratio;
+  using Clock = std::chrono::steady_clock;
+  for (auto _ : state) {
+    const Clock::time_point t0 = Clock::now();
+    for (std::size_t i = 0; i < batch; ++i) {
+      facesLight(c, light, lit);
+      silhouetteEdges(c, lit, silhouette);
+      benchmark::DoNotOptimize(silhouette.data());
+    }
+    const Clock::time_point t1 = Clock::now();
+    for (std::size_t i = 0; i < batch; ++i) {
+      std::uint32_t sum = sumWords(c.nx) + sumWords(c.ny) + sumWords(c.nz) + sumWords(c.ax) + sumWords(c.ay) +
+                          sumWords(c.az) + sumWords(c.edgeFaces);
+      benchmark::DoNotOptimize(sum);
+    }
+    const Clock::time_point t2 = Clock::now();
+    const double a = std::chrono::duration<double, std::nano>(t1 - t0).count() / static_cast<double>(batch),
+                 b = std::chrono::duration<double, std::nano>(t2 - t1).count() / static_cast<double>(batch);
+    extraction.push_back(a);
+    scanned.push_back(b);
+    ratio.push_back(a / b);
+  }
+  const auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+  };
+  const auto least = [](const std::vector<double>& v) {
+    return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end());
+  };
+  state.counters["triangles"] = static_cast<double>(c.faceCount());
+  state.counters["silhouette_edges"] = static_cast<double>(silhouette.size());
+  state.counters["extraction_ns"] = median(extraction);
+  state.counters["scan_ns"] = median(scanned);
+  state.counters["ratio"] = median(ratio);
+  state.counters["ratio_quietest"] = least(scanned) > 0.0 ? least(extraction) / least(scanned) : 0.0;
 }
 
 void faces(benchmark::State& state, const std::string& shape, const Size& size) {
@@ -329,8 +377,9 @@ bool dualAsPrepared(const std::string& shape, const Size& size) {
   };
   for (const LightCase& l : lightCases)
     if (!same(l.position)) return false;
-  for (std::size_t step = 0; step < 10; ++step)
-    if (!same(steppedLight(step))) return false;
+  for (const Motion& m : motions)
+    for (std::size_t step = 0; step < 10; ++step)
+      if (!same(turnedLight(step, m.degreesPerCall))) return false;
   return true;
 }
 
@@ -347,16 +396,22 @@ bool failed(const R& run) {
 // Keeps each run's time per iteration for the table: the median of its repetitions, which with
 // --benchmark_enable_random_interleaving ran interleaved with the other benchmarks', so that a
 // busy moment on a shared machine falls on all of them alike.
+double medianOf(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
 class TableReporter : public benchmark::ConsoleReporter {
  public:
   struct Row {
     double triangles = 0, edges = 0, tested = 0;
-    std::vector<double> ns;  // one per repetition
-    double median() const {
-      std::vector<double> sorted = ns;
-      std::sort(sorted.begin(), sorted.end());
-      const std::size_t n = sorted.size();
-      return n == 0 ? 0.0 : n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+    std::vector<double> ns;                               // one per repetition
+    std::map<std::string, std::vector<double>> counters;  // the paired benchmark's, per repetition
+    double median() const { return medianOf(ns); }
+    double counter(const std::string& name) const {
+      const auto c = counters.find(name);
+      return c == counters.end() ? 0.0 : medianOf(c->second);
     }
   };
   std::map<std::string, Row> rows;  // by name: "prepared/sphere/1k"
@@ -369,6 +424,8 @@ class TableReporter : public benchmark::ConsoleReporter {
       row.triangles = run.counters.at("triangles").value;
       if (run.counters.count("silhouette_edges")) row.edges = run.counters.at("silhouette_edges").value;
       if (run.counters.count("edges_tested")) row.tested = run.counters.at("edges_tested").value;
+      for (const char* name : {"extraction_ns", "scan_ns", "ratio", "ratio_quietest"})
+        if (run.counters.count(name)) row.counters[name].push_back(run.counters.at(name).value);
     }
     ConsoleReporter::ReportRuns(runs);
   }
@@ -379,86 +436,136 @@ double perTriangle(const TableReporter& reporter, const std::string& name) {
   return row == reporter.rows.end() ? 0.0 : row->second.median() / row->second.triangles;
 }
 
+// The machine's load while the benchmark ran: the 1-minute load average at its start and end.
+std::string loadAverage() {
+  std::ifstream in("/proc/loadavg");
+  double one = 0.0;
+  return in >> one ? std::to_string(one).substr(0, 4) : std::string("unknown");
+}
+
 void writeDualTable(const TableReporter& reporter, std::ofstream& out);
 
-void writeTable(const TableReporter& reporter, const std::string& file) {
+void writeTable(const TableReporter& reporter, const std::string& file, const std::string& loadBefore,
+                const std::string& loadAfter, int repetitions) {
   std::ofstream out(file);
-  out << "# Silhouette extraction against a memory scan\n\n"
-      << "The possible silhouette edges of welded spheres and tori for a point light at (3, 4, 5), two\n"
-      << "ways (common/geometry/shadow_volume.h): **mesh**, `facesLight` + `silhouetteEdges` on the mesh "
-         "and\n"
-      << "its adjacency (a gathered cross product per triangle, bit flags); **prepared**, the same two\n"
-      << "passes on a `SilhouetteCaster` (face normals and first corners precomputed once and streamed,\n"
-      << "each edge's two faces read once against one-byte flags; identical edges). Each against a scan\n"
-      << "that sums the arrays it reads as 32-bit words: **scan** the indices, positions and edges (mesh),\n"
-      << "**scan-prepared** the six per-face floats and the edges' face pairs (prepared). Single thread,\n"
-      << "CPU time per call, the median of 3 repetitions interleaved at random, all in one benchmark run;\n"
-      << "GB/s counts those arrays' bytes once per call.\n"
-      << "The halves: facesLight / the facing pass, silhouetteEdges / the edge pass. prepare: building\n"
-      << "the SilhouetteCaster, once per caster. Written by `cmake --build build --target\n"
-      << "silhouette-benchmark` (every repetition's time in silhouette-extraction.csv).\n\n"
+  char text[2048];
+  std::snprintf(
+      text, sizeof text,
+      "# Silhouette extraction against a memory scan\n\n"
+      "The possible silhouette edges of welded spheres and tori for a point light at (3, 4, 5), two\n"
+      "ways (common/geometry/shadow_volume.h): **mesh**, `facesLight` + `silhouetteEdges` on the mesh and\n"
+      "its adjacency (a gathered cross product per triangle, bit flags); **prepared** (the brute force),\n"
+      "the same two passes on a `SilhouetteCaster` (face normals and first corners precomputed once and\n"
+      "streamed, each edge's two faces read once against one-byte flags; identical edges). Each against\n"
+      "a scan that sums the arrays it reads as 32-bit words: **scan** the indices, positions and edges\n"
+      "(mesh), **scan-prepared** the six per-face floats and the edges' face pairs (prepared). Single\n"
+      "thread, CPU time per call, the median of %d repetitions interleaved at random, all in one\n"
+      "benchmark run; GB/s counts those arrays' bytes once per call. **paired**: the prepared passes\n"
+      "and scan-prepared timed in alternating batches of about 20 us inside one benchmark (wall\n"
+      "time), so that both see the same moment of a shared machine: the median of the batches'\n"
+      "ratios, and the ratio of the two fastest batches (the machine at its quietest). The halves:\n"
+      "facesLight / the facing pass, silhouetteEdges / the edge pass. prepare: building the\n"
+      "SilhouetteCaster, once per caster. Load average (1 minute) of this 2-core machine, shared with\n"
+      "other work: %s at the start, %s at the end. Written by `cmake --build build --target\n"
+      "silhouette-benchmark` (every repetition's time in silhouette-extraction.csv, the plot in\n"
+      "silhouette-extraction.svg).\n\n",
+      repetitions, loadBefore.c_str(), loadAfter.c_str());
+  out << text
       << "| shape | triangles | silhouette edges | mesh ns/tri | (facesLight + silhouetteEdges) | scan "
          "ns/tri | "
          "mesh / scan | prepared ns/tri | (facing + edge pass) | prepared GB/s | scan-prepared ns/tri | "
-         "scan-prepared GB/s | **prepared / scan-prepared** | prepared / scan | prepare ns/tri (once) |\n"
-      << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+         "scan-prepared GB/s | prepared / scan-prepared | **paired: prepared / scan-prepared** | "
+         "paired, quietest | prepare ns/tri (once) |\n"
+      << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  double worst = 0.0, worstQuiet = 0.0;
   for (const char* shape : {"sphere", "torus"})
     for (const Size& size : sizes) {
       const std::string key = std::string("/") + shape + "/" + size.name;
       const auto p = reporter.rows.find("prepared" + key);
+      const auto pair = reporter.rows.find("paired" + key);
       if (p == reporter.rows.end() || reporter.rows.find("scan-prepared" + key) == reporter.rows.end() ||
-          reporter.rows.find("mesh" + key) == reporter.rows.end())
+          reporter.rows.find("mesh" + key) == reporter.rows.end() || pair == reporter.rows.end())
         continue;
       const double mesh = perTriangle(reporter, "mesh" + key), scan = perTriangle(reporter, "scan" + key),
                    prep = perTriangle(reporter, "prepared" + key),
                    scanPrep = perTriangle(reporter, "scan-prepared" + key);
+      const double ratio = pair->second.counter("ratio"), quiet = pair->second.counter("ratio_quietest");
+      worst = std::max(worst, ratio);
+      worstQuiet = std::max(worstQuiet, quiet);
       const double bytes = static_cast<double>(preparedBytesRead(silhouetteCaster(shape, size)));
       char line[512];
       std::snprintf(
           line, sizeof line,
-          "| %s | %.0f | %.0f | %.2f | %.2f + %.2f | %.2f | %.1f | %.2f | %.2f + %.2f | %.1f | %.2f | %.1f | "
-          "**%.2f** | %.2f | %.1f |\n",
+          "| %s | %.0f | %.0f | %.2f | %.2f + %.2f | %.2f | %.1f | %.2f | %.2f + %.2f | %.1f | %.2f | "
+          "%.1f | %.2f | **%.2f** | %.2f | %.1f |\n",
           shape, p->second.triangles, p->second.edges, mesh, perTriangle(reporter, "faces" + key),
           perTriangle(reporter, "edges" + key), scan, mesh / scan, prep,
           perTriangle(reporter, "facing" + key), perTriangle(reporter, "edgepass" + key),
           bytes / (prep * p->second.triangles), scanPrep, bytes / (scanPrep * p->second.triangles),
-          prep / scanPrep, prep / scan, perTriangle(reporter, "prepare" + key));
+          prep / scanPrep, ratio, quiet, perTriangle(reporter, "prepare" + key));
       out << line;
     }
+  std::snprintf(text, sizeof text,
+                "\nThe brute force is within %.2f times the scan of the arrays it reads at every size "
+                "(paired medians), %.2f at the quietest.\n",
+                worst, worstQuiet);
+  out << text;
   writeDualTable(reporter, out);
 }
 
-// The second table: the dual-space query beside part 1's brute force by the light's distance.
+// The second table: the dual-space query beside part 1's brute force by the light's distance and
+// motion, and where each wins, from the numbers in it.
 void writeDualTable(const TableReporter& reporter, std::ofstream& out) {
-  out << "\n## Dual space against the brute force, by the light's distance\n\n"
+  out << "\n## Dual space against the brute force, by the light's distance and motion\n\n"
       << "The possible silhouette edges two ways, identical edges (checked by `--quick`): **brute force**,\n"
       << "the two passes of part 1 on a `SilhouetteCaster` (every face's facing test, every edge's two\n"
-      << "flags); **dual**, `DualSilhouettes::query` (common/geometry/dual_silhouette.h), the 4D tree of\n"
-      << "face planes descended only where the light's plane crosses a cell, each edge reached tested\n"
-      << "exactly. Lights: near (0.9, 1.2, 1.5), 2.1 from the centre of shapes of radius 1 (torus 1.3);\n"
-      << "far (30, 40, 50), 71 away; directional towards (3, 4, 5); step, the near light turned 0.1\n"
-      << "degrees about y before every call (it moved relative to the caster, so every call queries\n"
-      << "again: the re-query cost). Per call, median of the repetitions; the tree's build (dual\n"
-      << "prepare) is paid once per caster, apart. Edges tested: those the query decided exactly,\n"
-      << "per call (the brute force tests every edge).\n\n"
+      << "flags); **dual**, `DualSilhouettes` (common/geometry/dual_silhouette.h), the 4D tree of face\n"
+      << "planes descended only where the light's plane crosses a cell, each edge reached tested exactly.\n"
+      << "Distance, the light held still and the tree descended on every call (`descend`, the cost of one\n"
+      << "query): near (0.9, 1.2, 1.5), 2.1 from the centre of shapes of radius 1 (torus 1.3); far\n"
+      << "(30, 40, 50), 71 away; directional towards (3, 4, 5). Motion, the near light through `query`,\n"
+      << "which descends only when the light moved relative to the caster: still (the same light in the\n"
+      << "caster's space every call: the last answer reused), turn0.1 and turn10 (turned 0.1 or 10\n"
+      << "degrees about y before every call: a descent every call). The brute force has no cache: it\n"
+      << "does all its work on every call. CPU time per call, median of the repetitions; the tree's\n"
+      << "build (dual prepare) is paid once per caster, apart. Edges tested: those the query decided\n"
+      << "exactly, per call (the brute force tests every edge).\n\n"
       << "| shape | triangles | light | silhouette edges | brute force ns/tri | dual ns/tri | **dual / brute "
          "force** | dual edges tested | dual prepare ns/tri (once) |\n"
       << "|---|---:|---|---:|---:|---:|---:|---:|---:|\n";
+  std::map<std::string, std::vector<std::string>> dualWins, bruteWins;  // by light: "sphere 1k"
+  std::vector<std::string> order;
   for (const char* shape : {"sphere", "torus"})
     for (const Size& size : sizes) {
       const std::string key = std::string("/") + shape + "/" + size.name;
-      for (const char* where : {"near", "far", "directional", "step"}) {
-        const auto b = reporter.rows.find(std::string("prepared-") + where + key),
-                   d = reporter.rows.find(std::string("dual-") + where + key);
+      std::vector<std::string> wheres;
+      for (const LightCase& l : lightCases) wheres.push_back(l.name);
+      for (const Motion& m : motions) wheres.push_back(m.name);
+      for (const std::string& where : wheres) {
+        // The brute force has no cache: a still light costs it what the near light does.
+        const auto b = reporter.rows.find("prepared-" + (where == "still" ? std::string("near") : where) +
+                                          key),
+                   d = reporter.rows.find("dual-" + where + key);
         if (b == reporter.rows.end() || d == reporter.rows.end()) continue;
         const double brute = perTriangle(reporter, b->first), dual = perTriangle(reporter, d->first);
+        if (std::find(order.begin(), order.end(), where) == order.end()) order.push_back(where);
+        (dual < brute ? dualWins : bruteWins)[where].push_back(std::string(shape) + " " + size.name);
         char line[512];
         std::snprintf(line, sizeof line, "| %s | %.0f | %s | %.0f | %.2f | %.2f | **%.2f** | %.0f | %.1f |\n",
-                      shape, b->second.triangles, where, d->second.edges, brute, dual, dual / brute,
+                      shape, b->second.triangles, where.c_str(), d->second.edges, brute, dual, dual / brute,
                       d->second.tested, perTriangle(reporter, "dual-prepare" + key));
         out << line;
       }
     }
+  out << "\nWhere each wins, by light (the faster per call in the table above):\n\n";
+  const auto list = [](const std::vector<std::string>& v) {
+    std::string s;
+    for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + v[i];
+    return v.empty() ? std::string("nowhere") : s;
+  };
+  for (const std::string& where : order)
+    out << "- " << where << ": dual faster at " << list(dualWins[where]) << "; brute force faster at "
+        << list(bruteWins[where]) << ".\n";
 }
 
 void writeRaw(const TableReporter& reporter, const std::string& file) {
@@ -476,6 +583,7 @@ void writeRaw(const TableReporter& reporter, const std::string& file) {
 int main(int argc, char** argv) {
   bool quick = false;
   std::string table, raw;
+  int repetitions = 1;
   std::vector<char*> rest{argv[0]};
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -485,8 +593,10 @@ int main(int argc, char** argv) {
       table = argv[++i];
     else if (arg == "--raw" && i + 1 < argc)
       raw = argv[++i];
-    else
+    else {
+      if (arg.rfind("--benchmark_repetitions=", 0) == 0) repetitions = std::atoi(arg.c_str() + 24);
       rest.push_back(argv[i]);
+    }
   }
   int restCount = static_cast<int>(rest.size());
   benchmark::Initialize(&restCount, rest.data());
@@ -502,20 +612,23 @@ int main(int argc, char** argv) {
           {"prepared", prepared},
           {"scan", scan},
           {"scan-prepared", scanPrepared},
+          {"paired", paired},
           {"faces", faces},
           {"edges", edges},
           {"facing", facing},
           {"edgepass", edgepass},
           {"prepare", prepare},
-          {"dual", dual},
           {"dual-prepare", dualPrepare}};
       for (const auto& [name, run] : runs)
         benchmark::RegisterBenchmark((name + key).c_str(), run, std::string(shape), size);
-      for (std::size_t k = 0; k <= std::size(lightCases); ++k) {
-        const std::string where = k < std::size(lightCases) ? lightCases[k].name : "step";
+      for (std::size_t k = 0; k < std::size(lightCases) + std::size(motions); ++k) {
+        const std::string where =
+            k < std::size(lightCases) ? lightCases[k].name : motions[k - std::size(lightCases)].name;
         const std::string s = shape;
-        benchmark::RegisterBenchmark(("prepared-" + where + key).c_str(),
-                                     [s, &size, k](benchmark::State& st) { byLight<false>(st, s, size, k); });
+        if (where != "still")  // the brute force has no cache: still costs what near does
+          benchmark::RegisterBenchmark(
+              ("prepared-" + where + key).c_str(),
+              [s, &size, k](benchmark::State& st) { byLight<false>(st, s, size, k); });
         benchmark::RegisterBenchmark(("dual-" + where + key).c_str(),
                                      [s, &size, k](benchmark::State& st) { byLight<true>(st, s, size, k); });
       }
@@ -534,9 +647,10 @@ int main(int argc, char** argv) {
         return 1;
       }
     }
+  const std::string loadBefore = loadAverage();
   TableReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
-  if (!table.empty()) writeTable(reporter, table);
+  if (!table.empty()) writeTable(reporter, table, loadBefore, loadAverage(), repetitions);
   if (!raw.empty()) writeRaw(reporter, raw);
   benchmark::Shutdown();
   return 0;

@@ -113,7 +113,7 @@ int compareShadowHours(const Scene& scene, const std::filesystem::path& masks, g
     return 2;
   }
   std::vector<int> sum(static_cast<std::size_t>(size.x) * size.y, 0);
-  int result = 0, steps = 0;
+  int result = 0, steps = 0, nights = 0;
   for (int minutes = from; minutes <= to; minutes += step, ++steps) {
     CivilTime t = sun->sun->time;
     t.hour = minutes / 60;
@@ -135,6 +135,14 @@ int compareShadowHours(const Scene& scene, const std::filesystem::path& masks, g
     }
     const Image mask = readPng(maskFile, 1);
     for (std::size_t i = 0; i < sum.size() && i < mask.pixels.size(); ++i) sum[i] += mask.pixels[i] == 0;
+    if (p.elevationDeg <= 0.0) {  // night: the sun casts no shadow, and night is not shadow
+      ++nights;
+      const auto shadowed = std::count(mask.pixels.begin(), mask.pixels.end(), std::uint8_t{0});
+      if (shadowed != 0) {
+        std::cout << name << ": the sun is down, yet " << shadowed << " pixels are in its shadow\n";
+        result = 1;
+      }
+    }
   }
   const Image counts = readPng(masks / "hours.raw.png", 1);
   if (counts.width != size.x || counts.height != size.y) {
@@ -143,7 +151,7 @@ int compareShadowHours(const Scene& scene, const std::filesystem::path& masks, g
   }
   std::size_t differ = 0;
   for (std::size_t i = 0; i < sum.size(); ++i) differ += counts.pixels[i] != sum[i];
-  std::cout << "hours.raw.png: " << steps << " steps; " << differ
+  std::cout << "hours.raw.png: " << steps << " steps, " << nights << " at night; " << differ
             << " pixels whose count is not the number of steps their masks are in shadow\n";
   return differ == 0 ? result : 1;
 }
@@ -188,7 +196,7 @@ int main(int argc, char** argv) {
   }
   Scene scene;
   try {
-    scene = loadScene(sceneFile);
+    scene = loadScene(sceneFile, !span.empty());  // a profile may start or end at night
   } catch (const SceneError& e) {
     std::cerr << "scene_oracle: error: " << e.what() << "\n";
     return 2;

@@ -4,8 +4,9 @@
     plot_sweeps.py SWEEP IN.csv OUT.svg
 
 SWEEP names the sweep (its lesson): 03-recursive-mirrors, 05-light-blocking,
-09-cutout-extrusion, 10-soft-shadows, 14-csg or 16-fast-robust-shadows; IN.csv is what tests/sweeps/<sweep>_sweep
-wrote; OUT.svg is replaced only once the plot is drawn. A missing or malformed CSV, an unknown
+09-cutout-extrusion, 10-soft-shadows, 14-csg, 16-fast-robust-shadows or silhouette-extraction;
+IN.csv is what tests/sweeps/<sweep>_sweep wrote (silhouette-extraction: what
+tests/bench/silhouette_benchmark --raw wrote); OUT.svg is replaced only once the plot is drawn. A missing or malformed CSV, an unknown
 sweep or a bad command line gets one line on stderr and exit 2.
 
 Uses matplotlib (Debian's python3-matplotlib). Text stays text in the SVG (svg.fonttype
@@ -412,6 +413,60 @@ def plot_csg(path):
     return fig
 
 
+def plot_silhouette_extraction(path):
+    """tests/bench/silhouette_benchmark's raw CSV: ns per triangle against triangles. Left, the
+    brute force (the prepared passes) against the scan of its arrays and the mesh version; right,
+    the dual-space query by the light's distance and motion beside the brute force for the same
+    light, and the tree's build (once per caster)."""
+    rows = read_rows(path, ["triangles", "median_cpu_ns"], text=["benchmark"])
+    series = {}
+    for r in rows:
+        parts = r["benchmark"].split("/")
+        if len(parts) != 3:
+            raise BadInput(f"{path}: benchmark '{r['benchmark']}' is not KIND/SHAPE/SIZE")
+        kind, shape, _ = parts
+        if r["triangles"] <= 0:
+            raise BadInput(f"{path}: benchmark '{r['benchmark']}' has no triangles")
+        series.setdefault((kind, shape), []).append((r["triangles"], r["median_cpu_ns"] / r["triangles"]))
+    for points in series.values():
+        points.sort()
+    if ("prepared", "sphere") not in series or ("scan-prepared", "sphere") not in series:
+        raise BadInput(f"{path}: no prepared or scan-prepared rows for the sphere")
+    plt = pyplot()
+    fig, (scan, dual) = plt.subplots(1, 2, figsize=(11, 4.2), layout="constrained")
+
+    def line(ax, kind, label, colour, style="o-"):
+        for shape, dashes in (("sphere", style), ("torus", style.replace("-", "--"))):
+            points = series.get((kind, shape))
+            if points:
+                ax.plot([p[0] for p in points], [p[1] for p in points], dashes, color=colour, markersize=3.5,
+                        label=label if shape == "sphere" else None)
+
+    line(scan, "mesh", "mesh version (facesLight + silhouetteEdges)", "C3")
+    line(scan, "prepared", "brute force (prepared passes)", "C0")
+    line(scan, "scan-prepared", "scan of its arrays", "C7", "s-")
+    line(scan, "prepare", "preparing the caster (once)", "C2", "^-")
+    line(dual, "prepared-near", "brute force, near light", "C0")
+    line(dual, "prepared-far", "brute force, far light", "C9")
+    line(dual, "dual-near", "dual, near light", "C1")
+    line(dual, "dual-far", "dual, far light", "C5")
+    line(dual, "dual-directional", "dual, directional", "C6")
+    line(dual, "dual-turn10", "dual, near light turning 10 deg a call", "C4")
+    line(dual, "dual-still", "dual, still light (answer reused)", "C8", "v-")
+    line(dual, "dual-prepare", "dual tree build (once)", "C2", "^-")
+    for ax in (scan, dual):
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        plain_log(ax.xaxis)
+        ax.grid(True, which="major", alpha=0.3)
+        ax.set_xlabel("triangles (sphere: solid lines; torus: dashed)")
+        ax.set_ylabel("CPU ns per triangle, per call")
+        ax.legend(fontsize=7)
+    scan.set_title("Brute force against a scan of its arrays")
+    dual.set_title("Dual space against the brute force")
+    return fig
+
+
 SWEEPS = {
     "03-recursive-mirrors": plot_recursive_mirrors,
     "05-light-blocking": plot_light_blocking,
@@ -419,6 +474,7 @@ SWEEPS = {
     "10-soft-shadows": plot_soft_shadows,
     "14-csg": plot_csg,
     "16-fast-robust-shadows": plot_fast_shadows,
+    "silhouette-extraction": plot_silhouette_extraction,
 }
 
 USAGE = f"usage: {PROGRAM} SWEEP IN.csv OUT.svg   (SWEEP: {', '.join(SWEEPS)})"

@@ -152,6 +152,19 @@ TEST(SceneFile, ASunLightStandsWhereTheSunDoes) {
   EXPECT_FALSE(scene.lights[0].sun);
 }
 
+// A sun below the horizon lights nothing: refused for a still picture, read for a shadow profile
+// (--shadow-hours moves the sun; its steps at night are night, not shadow), pointing below.
+TEST(SceneFile, ASunBelowTheHorizonIsReadOnlyForAShadowProfile) {
+  const std::string text = std::string(header) + "light sun 48.2 16.37 2025-09-18 21:00 2\nobject a box\n";
+  EXPECT_THROW(parseScene(text, "test.scene"), SceneError);
+  const Scene scene = parseScene(text, "test.scene", readObjFile, true);
+  ASSERT_EQ(scene.lights.size(), 2u);
+  ASSERT_TRUE(scene.lights[1].sun);
+  EXPECT_EQ(scene.lights[1].sun->time.hour, 21);
+  EXPECT_EQ(scene.lights[1].position.w, 0.0f);
+  EXPECT_LT(scene.lights[1].position.y, 0.0f);
+}
+
 TEST(SceneFile, TheDocumentedExampleReads) {
   std::ifstream in(std::filesystem::path(DOCS_DIR) / "scenes.md");
   const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -202,7 +215,8 @@ TEST(SceneFile, EveryMistakeIsOneLineWithFileLineAndWhatWasExpected) {
   const struct {
     std::string text, message;
   } cases[] = {
-      {h + "lamp 1 2 3\n", "test.scene:3: unknown keyword 'lamp'; expected camera, ambient, light, object or csg"},
+      {h + "lamp 1 2 3\n",
+       "test.scene:3: unknown keyword 'lamp'; expected camera, ambient, light, object or csg"},
       {"  translate 1 2 3\n" + h,
        "test.scene:1: an indented line is an object's setting, and no object line"},
       {h + "object a box\nlight point 1 2 3\n  translate 1 2 3\n",
@@ -290,10 +304,10 @@ TEST(SceneFile, EveryMistakeIsOneLineWithFileLineAndWhatWasExpected) {
 // Messages quote the file as printable ASCII: any other byte is written \xNN, and a long word
 // is cut short.
 TEST(SceneFile, MessagesArePrintable) {
-  EXPECT_EQ(
-      errorOf(std::string(header) + "l\x1b[2Jamp\x01\xff 1\n"),
-      "test.scene:3: unknown keyword 'l\\x1b[2Jamp\\x01\\xff'; expected camera, ambient, light, object or csg "
-      "(settings of an object are indented)");
+  EXPECT_EQ(errorOf(std::string(header) + "l\x1b[2Jamp\x01\xff 1\n"),
+            "test.scene:3: unknown keyword 'l\\x1b[2Jamp\\x01\\xff'; expected camera, ambient, light, object "
+            "or csg "
+            "(settings of an object are indented)");
   EXPECT_EQ(errorOf(std::string(header) + std::string(100, 'x') + "\n")
                 .rfind("test.scene:3: unknown keyword '" + std::string(40, 'x') + "...';", 0),
             0u);

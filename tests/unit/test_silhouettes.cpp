@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
 #include <string>
 #include <vector>
 
@@ -51,7 +53,8 @@ std::vector<NamedCaster> suiteMeshes() {
   for (const auto& folder : {scenes, scenes / "hard"})
     for (const auto& entry : std::filesystem::directory_iterator(folder)) {
       if (entry.path().extension() != ".scene") continue;
-      const Scene scene = loadScene(entry.path());
+      const Scene scene =
+          loadScene(entry.path(), true);  // the dusk scene too: its casters are what count here
       for (const SceneObject& o : scene.objects)
         if (o.casts)
           out.push_back({entry.path().filename().string() + " " + o.name, o.caster.mesh, o.caster.adjacency});
@@ -165,6 +168,77 @@ TEST(DualSilhouettes, PrunesMostOfTheTreeOnAFineSphere) {
     EXPECT_LT(dual.lastQuery().edgesTested, caster.edgeFaces.size() / 5);  // 11-14% measured
     EXPECT_LT(dual.lastQuery().cellsVisited, dual.cellCount() / 4);
   }
+}
+
+// The query reruns only when the light moves relative to the caster: the same light in the
+// caster's object space (even after both moved together) reuses the last answer without a descent,
+// and a light that moved, or a caster that moved under a still light, descends again. The answer
+// reused is the tree's own, whatever the caller did to its vector in between.
+TEST(DualSilhouettes, QueriesAgainOnlyWhenTheLightMovesRelativeToTheCaster) {
+  const Mesh torus = weldByPosition(makeTorus(1.0f, 0.3f, 32, 16)).mesh;
+  const EdgeAdjacency adjacency = buildEdgeAdjacency(torus.indices, torus.positions.size());
+  const SilhouetteCaster caster = prepareSilhouettes(torus, adjacency);
+  const DualSilhouettes dual(caster);
+  const auto same = [&](const std::vector<SilhouetteEdge>& edges, const glm::vec4& light) {
+    const std::vector<SilhouetteEdge> expected = silhouetteEdges(caster, light);
+    if (edges.size() != expected.size() || expected.empty()) return false;
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      if (edges[i].v0 != expected[i].v0 || edges[i].v1 != expected[i].v1) return false;
+    return true;
+  };
+  // Light and caster in the world; the query takes the light in the caster's object space.
+  const glm::vec4 world(3.0f, 4.0f, 5.0f, 1.0f);
+  const auto local = [](const glm::mat4& model, const glm::vec4& light) {
+    return glm::inverse(model) * light;
+  };
+  std::vector<SilhouetteEdge> edges;
+  dual.query(local(glm::mat4(1.0f), world), edges);
+  EXPECT_EQ(dual.queriesRun(), 1u);
+  EXPECT_FALSE(dual.lastQuery().reused);
+  EXPECT_GT(dual.lastQuery().cellsVisited, 0u);
+  EXPECT_TRUE(same(edges, world));
+
+  edges.assign(3, SilhouetteEdge{7, 7});  // another caster's edges in the same vector
+  dual.query(local(glm::mat4(1.0f), world), edges);
+  EXPECT_EQ(dual.queriesRun(), 1u);
+  EXPECT_EQ(dual.queriesReused(), 1u);
+  EXPECT_TRUE(dual.lastQuery().reused);
+  EXPECT_EQ(dual.lastQuery().cellsVisited, 0u);
+  EXPECT_TRUE(same(edges, world));
+
+  // Both moved by the same translation (exact in float): the same light in object space.
+  const glm::mat4 moved = glm::translate(glm::mat4(1.0f), glm::vec3(2.0f, -1.0f, 0.5f));
+  const glm::vec4 movedLight = moved * world;
+  ASSERT_EQ(local(moved, movedLight), world);
+  dual.query(local(moved, movedLight), edges);
+  EXPECT_EQ(dual.queriesRun(), 1u);
+  EXPECT_TRUE(same(edges, world));
+
+  // The caster moved under the still light: a new query, the right edges.
+  dual.query(local(moved, world), edges);
+  EXPECT_EQ(dual.queriesRun(), 2u);
+  EXPECT_TRUE(same(edges, local(moved, world)));
+
+  // The light moved a little; then back to the first light (only the last answer is kept).
+  const glm::vec4 nudged(3.0f, 4.0f, 5.001f, 1.0f);
+  dual.query(nudged, edges);
+  EXPECT_EQ(dual.queriesRun(), 3u);
+  EXPECT_TRUE(same(edges, nudged));
+  dual.query(world, edges);
+  EXPECT_EQ(dual.queriesRun(), 4u);
+  EXPECT_TRUE(same(edges, world));
+
+  // The same direction as a directional light is another light.
+  dual.query(glm::vec4(3.0f, 4.0f, 5.0f, 0.0f), edges);
+  EXPECT_EQ(dual.queriesRun(), 5u);
+  EXPECT_TRUE(same(edges, glm::vec4(3.0f, 4.0f, 5.0f, 0.0f)));
+  EXPECT_EQ(dual.queriesReused(), 2u);
+  // descend() always descends, and its answer is the one reused next.
+  dual.descend(glm::vec4(3.0f, 4.0f, 5.0f, 0.0f), edges);
+  EXPECT_EQ(dual.queriesRun(), 6u);
+  dual.query(glm::vec4(3.0f, 4.0f, 5.0f, 0.0f), edges);
+  EXPECT_EQ(dual.queriesRun(), 6u);
+  EXPECT_EQ(dual.queriesReused(), 3u);
 }
 
 TEST(SilhouetteCaster, RefusesFlagsOfTheWrongSizeAndAdjacencyOfAnotherMesh) {
