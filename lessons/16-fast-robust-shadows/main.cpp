@@ -385,9 +385,8 @@ class FastRobustShadows final : public Lesson {
     if (c.convex) return 1;
     const bool outside =
         light.w == 0.0f || glm::distance(glm::vec3(light) / light.w, c.bounds.center) > c.bounds.radius;
-    if (!p.report
-             .closed())  // an open caster casts from both sides, and a fold of it changes the count by two
-      return nestingBound(p.mesh.indices.size() / 3, 2 * edges, false, outside);
+    // An open caster casts from both sides, and a fold of it changes the count by two.
+    if (!p.report.closed()) return nestingBound(p.mesh.indices.size() / 3, 2 * edges, false, outside);
     return nestingBound(static_cast<std::size_t>(std::count(lit.begin(), lit.end(), true)), edges, false,
                         outside);
   }
