@@ -1,9 +1,10 @@
 // A lesson's own framebuffer for a sum of passes (lesson 16 adds each light's illumination into
 // it, McGuire et al.'s rendering system): its colour in half floats, so that many dim lights are
-// not rounded to 1/255 one by one (or RGBA8, to show that rounding), beside a packed depth/stencil buffer of
-// the framework's depth format, so that depth and stencil copy into the framework's framebuffer unchanged (a
-// depth/stencil blit needs identical formats). The framework reads its own framebuffer (pass
-// snapshots, stencil pictures, shadow masks, the oracle): the lesson copies into it.
+// not rounded to 1/255 one by one (or RGBA8, to show that rounding), beside a packed
+// depth/stencil buffer of the framework's depth format, so that depth and stencil copy into the
+// framework's framebuffer unchanged (a depth/stencil blit needs identical formats). The framework
+// reads its own framebuffer (pass snapshots, stencil pictures, shadow masks, the oracle): the
+// lesson copies into it.
 #pragma once
 #include <glm/vec2.hpp>
 
