@@ -25,13 +25,15 @@ const char* depthFormatName(DepthFormat format) {
   return format == DepthFormat::Float32 ? "float32" : "fixed24";
 }
 
-Framebuffer::Framebuffer(int width, int height, int stencilBits, DepthFormat depthFormat)
-    : width_(width), height_(height), depthFormat_(depthFormat) {
+Framebuffer::Framebuffer(int width, int height, int stencilBits, DepthFormat depthFormat,
+                         ColourFormat colourFormat)
+    : width_(width), height_(height), depthFormat_(depthFormat), colourFormat_(colourFormat) {
   glGenFramebuffers(1, &fbo_);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   glGenRenderbuffers(1, &colour_);
   glBindRenderbuffer(GL_RENDERBUFFER, colour_);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+  glRenderbufferStorage(GL_RENDERBUFFER, colourFormat == ColourFormat::RGBA16F ? GL_RGBA16F : GL_RGBA8, width,
+                        height);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_);
   glGenRenderbuffers(1, &depthStencil_);
   glBindRenderbuffer(GL_RENDERBUFFER, depthStencil_);

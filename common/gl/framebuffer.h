@@ -1,5 +1,6 @@
-// The off-screen framebuffer every lesson renders into: RGBA8 colour plus a packed
-// depth/stencil attachment (24-bit fixed-point depth, or 32-bit float depth for reversed depth).
+// The off-screen framebuffer every lesson renders into: RGBA8 colour (half floats for a lesson's
+// own accumulation target) plus a packed depth/stencil attachment (24-bit fixed-point depth, or
+// 32-bit float depth for reversed depth).
 // Its stencil bits are verified, never assumed from a pixel format, so every backend gives the
 // same stencil buffer.
 #pragma once
@@ -29,10 +30,17 @@ enum class DepthFormat { Fixed24, Float32 };
 GLenum depthStencilFormat(DepthFormat);
 const char* depthFormatName(DepthFormat);  // "fixed24", "float32"
 
+// The colour buffer's format. RGBA8: 8 bits a channel, every lesson's default. RGBA16F: a half
+// float a channel (core since 3.0), for a sum of many small terms (lights added one pass each)
+// that 8 bits would round term by term; a copy into RGBA8 clamps it to 0..1.
+enum class ColourFormat { RGBA8, RGBA16F };
+
 class Framebuffer {
  public:
-  // stencilBits is 8 for lessons; 0 builds one without stencil (to test the check).
-  Framebuffer(int width, int height, int stencilBits = 8, DepthFormat = DepthFormat::Fixed24);
+  // stencilBits is 8 for lessons; 0 builds one without stencil (to test the check). Throws
+  // UsageError when GL calls the result incomplete.
+  Framebuffer(int width, int height, int stencilBits = 8, DepthFormat = DepthFormat::Fixed24,
+              ColourFormat = ColourFormat::RGBA8);
   ~Framebuffer();
   Framebuffer(const Framebuffer&) = delete;
   Framebuffer& operator=(const Framebuffer&) = delete;
@@ -43,6 +51,7 @@ class Framebuffer {
   GLuint id() const { return fbo_; }
   int stencilBits() const { return stencilBits_; }  // as queried from GL
   DepthFormat depthFormat() const { return depthFormat_; }
+  ColourFormat colourFormat() const { return colourFormat_; }
 
   Image readColour() const;   // RGBA, top row first, alpha 255
   Image readStencil() const;  // one byte per pixel, top row first
@@ -53,6 +62,7 @@ class Framebuffer {
   int width_, height_;
   int stencilBits_ = 0;
   DepthFormat depthFormat_;
+  ColourFormat colourFormat_;
   GLuint fbo_ = 0, colour_ = 0, depthStencil_ = 0;
 };
 

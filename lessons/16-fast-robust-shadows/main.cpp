@@ -4,24 +4,32 @@
 // Lessons 07-09 counted volume faces in front of the scene (z-pass), which breaks when the eye,
 // or the near plane, lies in a shadow. Counting the faces behind the scene instead (z-fail)
 // never meets the near plane, but needs the volume closed at both ends, caps that cost a
-// triangle per caster face. The paper's system pays only where it must:
-//   - every caster keeps a doubled vertex array (each vertex with w = 1 and w = 0); a vertex
-//     shader sends the w = 0 copies to infinity away from the light, so a volume is indices only;
-//   - the possible silhouette (edges between a face towards and a face away from the light) is
-//     found in object space and extruded into side quads that face out of the volume;
-//   - the occlusion pyramid, from the light to the camera's near rectangle, holds every caster
-//     whose volume can reach the eye: outside it (case 1) z-pass with the sides alone; inside it
-//     z-fail with the sides and the dark cap (a fan over the silhouette at infinity), plus the
-//     light cap (the caster's lit faces) only when the caster may be on screen (case 3, not 2);
-//   - each point light has finite bounds: casters that miss them are culled, and the light's
-//     shadow and illumination passes are scissored to their rectangle on screen, and its
-//     volumes depth-bounded where the driver has EXT_depth_bounds_test;
-//   - scene files may bring open meshes, whose faces block light from both sides (a volume from
-//     each side), and lights inside a caster's hull, where the fan comes out a whole sphere off
-//     and gets it back (closeAroundLight);
-//   - the rendering system of its section 8: an ambient pass fills the depth buffer, then per
-//     light, the stencil cleared, its shadow volumes counted, and the light added with stencil
-//     EQUAL 0 and additive blending, into a float target so many lights do not band.
+// triangle per caster face. The paper's system pays only where it must. Its pieces, in its
+// order, in this file and in common/ (read geometry/fast_shadows.h alongside: it declares them
+// in nearly this order):
+//   1. the doubled vertex array: each caster vertex with w = 1 and w = 0, so a volume is indices
+//      only (doubledVertexArray; on the GPU gl/doubled_caster.h; shaders/common/extrude.vert
+//      sends the w = 0 copies to infinity away from the light);
+//   2. the possible silhouette: edges between a face towards and a face away from the light,
+//      found in object space (geometry/shadow_volume.h's facesLight and silhouetteEdges) and
+//      extruded into side quads that face out of the volume (sideIndices);
+//   3. the case from the occlusion pyramid, from the light to the camera's near rectangle
+//      (nearRectangle, occlusionPyramid, shadowCase): outside it z-pass with the sides alone
+//      (case 1), inside it z-fail with a dark cap, and the light cap only where the caster may
+//      be on screen (case 3, not 2). recipeFor below is the one place that decides;
+//   4. the dark cap as a fan over the silhouette at infinity (fanDarkCap; closeAroundLight for a
+//      light inside the caster's hull);
+//   5. the light cap: the caster's lit faces (lightCapIndices);
+//   6. the light's bounds (lightClip): casters that miss them culled, the light's passes
+//      scissored to their rectangle on screen, depth-bounded where the driver has
+//      EXT_depth_bounds_test;
+//   7. the rendering system of section 8 (render below): an ambient pass fills the depth
+//      buffer, then per light the stencil cleared, its volumes counted, and its light added
+//      where the stencil is 0, into a float target (gl/accumulation_target.h) so many lights do
+//      not band.
+// Scene files may also bring open meshes, whose faces block light from both sides (a volume
+// from each side), and more nested volumes than 8 bits count (geometry/shadow_volume.h's
+// countPlan).
 //
 // Stencil recipe per light, one pass over both faces (two-sided stencil, no culling), depth
 // LESS, depth and colour writes off:
@@ -47,12 +55,12 @@
 #include "geometry/scene.h"
 #include "geometry/shadow_volume.h"
 #include "geometry/shapes.h"
+#include "gl/accumulation_target.h"
 #include "gl/doubled_caster.h"
 #include "gl/errors.h"
-#include "gl/framebuffer.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
-#include "gl/recorder.h"
+#include "gl/scene_meshes.h"
 #include "gl/shader.h"
 
 using namespace stencil;
@@ -60,22 +68,701 @@ using namespace stencil;
 namespace {
 
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
+Scene builtInScene(int slices, bool many, bool moving);  // with the options, after the lesson
+
+// ---- 1. the doubled vertex array --------------------------------------------------------------
+
+// A caster, prepared once per scene: its welded vertices doubled on the GPU, so that each light
+// only rewrites its index list.
+struct Caster {
+  std::size_t object = 0;              // in the scene
+  BoundingSphere bounds;               // object space
+  std::unique_ptr<DoubledCaster> gpu;  // doubledVertexArray, and this light's indices
+  bool convex = false;                 // its volume nests once
+  // --set silhouettes=1 or 2 builds these on first use; the tree reads the streaming caster.
+  std::unique_ptr<SilhouetteCaster> streaming;
+  std::unique_ptr<DualSilhouettes> dual;
+  CasterVolume volume;  // for the light being drawn; after the loop, the light drawn last's
+};
+
+// ---- 2. the possible silhouette ---------------------------------------------------------------
+
+// The possible silhouette edges for a light in the caster's space, directed the way the lit face
+// walks them. A closed caster's are found the way --set silhouettes says, the same edges each
+// way: 0 brute force over its adjacency, 1 streaming passes (SilhouetteCaster), 2 a dual-space
+// tree (DualSilhouettes). An open caster blocks light with both sides: its edges between the two
+// kinds twice.
+std::vector<SilhouetteEdge> possibleSilhouette(Caster& c, const PreparedCaster& p, const glm::vec4& light,
+                                               const std::vector<bool>& lit, int how) {
+  if (!p.report.closed()) return twoSidedSilhouetteEdges(p.adjacency, lit);
+  if (how == 0) return silhouetteEdges(p.adjacency, lit);
+  if (!c.streaming) c.streaming = std::make_unique<SilhouetteCaster>(prepareSilhouettes(p.mesh, p.adjacency));
+  if (how == 1) return silhouetteEdges(*c.streaming, light);
+  if (!c.dual) c.dual = std::make_unique<DualSilhouettes>(*c.streaming);
+  std::vector<SilhouetteEdge> edges;
+  c.dual->query(light, edges);
+  return edges;
+}
+
+// ---- 3. the case, and what it asks of the volume ----------------------------------------------
+
+enum class DarkCapKind {
+  None,       // z-pass, or a directional light: the sides meet at one point at infinity
+  Fan,        // McGuire et al.'s, O(s): a fan over the silhouette at infinity
+  BackFaces,  // Everitt and Kilgard's, O(f): the faces away from the light at infinity
+  Piece,      // one piece of the light cap, pushed to infinity and turned round
+};
+struct Recipe {
+  bool zfail = false;  // counted behind the scene; else in front of it (z-pass)
+  DarkCapKind darkCap = DarkCapKind::None;
+  bool lightCap = false;
+};
+
+// What one caster's volume is for one light, from the method and the caster's case (1 misses the
+// occlusion pyramid; 2 meets it off screen; 3 meets it and may be seen):
+//   McGuire          1 z-pass, the sides alone; 2 z-fail with the fan; 3 the same and the light
+//                    cap (lightCapOption off leaves it out, to show the count go wrong);
+//   EverittKilgard   z-fail with both full caps, whatever the case;
+//   Lengyel          z-pass while no caster meets the pyramid (anyInPyramid), else as EverittKilgard;
+//   ZPass            z-pass, which fails with the eye in a shadow.
+Recipe recipeFor(ShadowMethod method, int shadowCase, bool anyInPyramid, bool lightCapOption,
+                 bool directional) {
+  const bool fullCaps =
+      method == ShadowMethod::EverittKilgard || (method == ShadowMethod::Lengyel && anyInPyramid);
+  Recipe r;
+  r.zfail = method == ShadowMethod::McGuire ? shadowCase != 1 : fullCaps;
+  if (r.zfail && !directional) r.darkCap = fullCaps ? DarkCapKind::BackFaces : DarkCapKind::Fan;
+  r.lightCap = r.zfail && (fullCaps || (shadowCase == 3 && lightCapOption));
+  return r;
+}
+
+// ---- 4 and 5. the fan dark cap and the light cap: one caster's volume ------------------------
+
+// One caster's volume for a light in its space, as indices into its doubled vertex array: the
+// sides, the dark cap and the light cap one after the other, then the silhouette as lines (for
+// the overlay); split fan triangles, and whole spheres closeAroundLight adds, as vertices.
+// lit: the faces taken as facing the light (all that do, or one piece); edges: between them.
+VolumeIndices volumeOf(const PreparedCaster& p, const glm::vec4& light, const Recipe& recipe,
+                       const std::vector<bool>& lit, const std::vector<SilhouetteEdge>& edges,
+                       bool splitFan) {
+  const Mesh& mesh = p.mesh;
+  const bool twoSided = !p.report.closed();  // an open mesh: a volume from each side of its faces
+  VolumeIndices out;
+  CasterVolume& v = out.volume;
+  v.zfail = recipe.zfail;
+  out.indices = sideIndices(mesh, edges, light.w == 0.0f);
+  v.sides = out.indices.size();
+  // 5. The light cap, the lit faces as they are; the fan reads them too, to find a light that the
+  // fan and the caster enclose together.
+  std::vector<std::uint32_t> lightCap, darkCap;
+  if (recipe.lightCap || recipe.darkCap == DarkCapKind::Fan) lightCap = lightCapIndices(mesh, lit, twoSided);
+  if (recipe.darkCap == DarkCapKind::Fan) {  // 4. one triangle per silhouette edge
+    const glm::vec3 point = glm::vec3(light) / light.w;
+    DarkCap fan = fanDarkCap(mesh, edges, point, splitFan ? 179.0f : 361.0f);
+    v.spheres = std::abs(closeAroundLight(fan, mesh, lightCap, point));  // CPU work, O(f)
+    darkCap = fan.indices;
+    out.split = fan.split;
+    v.splitTriangles = fan.splitTriangles;
+    v.splitVertices = out.split.size();
+  } else if (recipe.darkCap == DarkCapKind::BackFaces) {
+    darkCap = backFaceDarkCapIndices(mesh, lit, twoSided);
+  } else if (recipe.darkCap == DarkCapKind::Piece) {
+    darkCap = pieceDarkCapIndices(mesh, lit);
+  }
+  out.indices.insert(out.indices.end(), darkCap.begin(), darkCap.end());
+  v.darkCap = darkCap.size();
+  if (recipe.lightCap) out.indices.insert(out.indices.end(), lightCap.begin(), lightCap.end());
+  v.lightCap = recipe.lightCap ? lightCap.size() : 0;
+  for (const SilhouetteEdge& e : edges) out.indices.insert(out.indices.end(), {e.v0, e.v1});
+  v.silhouette = 2 * edges.size();
+  return out;
+}
+
+// ---- 7. the rendering system (section 8), with 6. the light's bounds --------------------------
+
+class FastRobustShadows final : public Lesson {
+ public:
+  explicit FastRobustShadows(const Scene* fromFile)
+      : extrude_("common/extrude.vert", "common/flat.frag"), flat_("common/flat.vert", "common/flat.frag") {
+    if (fromFile) setScene(*fromFile);
+    window_.upload(
+        {{-1, -1, 0, 1}, {1, -1, 0, 1}, {1, 1, 0, 1}, {-1, -1, 0, 1}, {1, 1, 0, 1}, {-1, 1, 0, 1}});
+  }
+
+  void render(Frame& f) override {
+    prepare(f);
+    startCounts(f);
+    GLint framework = 0;  // the framework's framebuffer, bound now: every pass ends copied into it
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framework);
+    framework_ = static_cast<GLuint>(framework);
+    setDepthMapping(f);  // before anything is cleared or drawn
+    const ColourFormat colour = f.on("float") ? ColourFormat::RGBA16F : ColourFormat::RGBA8;
+    const DepthFormat depth = f.reversedDepth ? DepthFormat::Float32 : DepthFormat::Fixed24;
+    if (!target_ || !target_->fits(f.size, colour, depth))
+      target_ = std::make_unique<AccumulationTarget>(f.size, colour, depth);
+    target_->bind();
+    // Frustum planes, the near rectangle and the light's bounds read GL's convention, not the
+    // reversed matrix the frame draws with.
+    const glm::mat4 viewProjection = f.projection * f.view;
+    // A mirrored view turns every triangle round on screen: what faces the eye winds clockwise.
+    glFrontFace(glm::determinant(f.view) < 0.0f ? GL_CW : GL_CCW);
+    // Each object placed for this frame; closed ones the near plane cuts show their back faces.
+    f.count("objects_cut_by_near_plane", meshes_.place(scene_, f.time, viewProjection));
+    const std::vector<glm::mat4>& models = meshes_.models();
+
+    // ---- ambient: the depth buffer filled once, for every light --------------------------------
+    glClearColor(0.02f, 0.025f, 0.035f, 1.0f);
+    glClearStencil(0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);  // depth: the farthest
+    glEnable(GL_DEPTH_TEST);                                                     // the nearest surface wins
+    glDepthFunc(less_);
+    // Rooms: a closed caster around the eye is a shell seen from inside (geometry/solid.h).
+    solids_ = solidsSeenFrom(scene_, models, f.eye);
+    if (!solids_.refusal.empty()) throw UsageError(solids_.refusal);
+    glEnable(GL_CULL_FACE);  // a closed object's back faces are hidden, unless the near plane cuts it
+    const glm::vec3 ambient =
+        fromFile_ ? scene_.ambient : glm::vec3(0.01f * static_cast<float>(f.option("ambient")));
+    meshes_.draw(scene_, projection_ * f.view, f.eye, glm::vec4(0, 1, 0, 0), glm::vec3(0), kInfinity,
+                 ambient);
+    endPass(f, "ambient");
+
+    // ---- per light: its shadow in the stencil, then its light where the stencil is 0 ----------
+    const std::vector<Plane> frustum = viewFrustumPlanes(viewProjection);
+    const std::array<glm::vec3, 4> nearRect = nearRectangle(viewProjection);
+    for (int index : lightOrder(f)) {  // the chosen light last: the frame ends with its stencil
+      const SceneLight& light = scene_.lights[static_cast<std::size_t>(index)];
+      const std::string which = "light " + std::to_string(index);  // the passes say whose they are
+      for (Caster& c : casters_) c.volume = {};
+      // 6. The light's bounds: its sphere's rectangle on screen and the depths it spans.
+      const LightClip clip =
+          lightClip(light.position, light.radius, f.on("bounds"), f.view, f.projection, f.size);
+      if (clip.offScreen()) {  // it adds nothing
+        f.count("lights_offscreen");
+        continue;
+      }
+      f.count("lights_drawn");
+      glScissor(clip.scissor.x, clip.scissor.y, clip.scissor.width, clip.scissor.height);
+
+      // The stencil cleared everywhere, so what the frame ends with is this light's alone.
+      glStencilMask(0xFF);
+      glClear(GL_STENCIL_BUFFER_BIT);
+      if (f.on("shadow") && lightBuried(scene_, models, solids_, light.position)) {
+        // A light inside a solid (outside the room the eye is in) lights nothing the eye sees:
+        // its picture is all shadow, a count of 1 everywhere, and it adds no light.
+        glClearStencil(1);
+        glClear(GL_STENCIL_BUFFER_BIT);
+        glClearStencil(0);
+        f.count("lights_buried");
+        endPass(f, "shadows", which, index);
+        continue;
+      }
+      glEnable(GL_SCISSOR_TEST);  // from here on only the light's rectangle is touched
+      const bool depthBounds = hasFeature(f.features, Feature::DepthBoundsTest) && clip.depthBounds;
+      if (depthBounds) {  // volumes skip pixels whose surface lies in front of or behind the sphere
+        glEnable(GL_DEPTH_BOUNDS_TEST_EXT);
+        if (f.reversedDepth)  // the same bounds in reversed depth: d -> 1 - d, the order swapped
+          glDepthBoundsEXT(1.0 - clip.depth.farthest, 1.0 - clip.depth.nearest);
+        else
+          glDepthBoundsEXT(clip.depth.nearest, clip.depth.farthest);
+      }
+      f.count(depthBounds ? "depth_bounds_used" : "depth_bounds_skipped");
+      if (f.on("shadow")) {
+        buildVolumes(f, light.position, clip, occlusionPyramid(nearRect, light.position), frustum);
+        countVolumes(f, light.position);
+      }
+      if (depthBounds) glDisable(GL_DEPTH_BOUNDS_TEST_EXT);
+      endPass(f, "shadows", which, index);
+      if (f.on("fill") && f.on("shadow")) {  // the fill the stencil test saw, for --stats
+        drawVolumeFill(light.position);
+        endPass(f, "volume-fill", which);
+      }
+
+      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);  // the light's colour is added
+      glDepthMask(GL_FALSE);                            // onto the surfaces already there
+      glDepthFunc(GL_EQUAL);                            // exactly the ambient pass's surfaces
+      glEnable(GL_STENCIL_TEST);
+      glStencilFunc(GL_EQUAL, 0, 0xFF);        // outside every volume
+      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);  // the count stays for the next look
+      glEnable(GL_BLEND);
+      glBlendFunc(GL_ONE, GL_ONE);  // light adds up
+      meshes_.draw(scene_, projection_ * f.view, f.eye, light.position, light.color, light.radius,
+                   glm::vec3(0));  // with its own fall-off
+      glDisable(GL_BLEND);
+      glDisable(GL_STENCIL_TEST);
+      glDisable(GL_SCISSOR_TEST);
+      glDepthFunc(less_);
+      glDepthMask(GL_TRUE);
+      endPass(f, "illumination", which);
+    }
+    recordLastLight(f);
+
+    // ---- the classroom's view: cases, volumes, silhouettes of the light drawn last ------------
+    if (f.option("stretch") > 0) {  // in the accumulation target, before RGBA16F is clamped to 8 bits
+      stretchContrast(f.option("stretch"));
+      target_->copyTo(framework_);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, framework_);
+    if (f.on("tint")) tintShadow();
+    if (f.on("show")) drawOverlay(f);
+    glDisable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);  // GL's default again
+    f.pass("overlay");
+  }
+
+ private:
+  // One volume counted for the current light: a caster's whole volume, or one piece of it.
+  struct LightVolume {
+    std::size_t caster;
+    std::size_t first;  // into the caster's uploaded indices
+    CasterVolume volume;
+    std::size_t nesting;  // the most it can add to a pixel's count
+    bool piece;           // one piece of the caster's light cap
+  };
+
+  // Every caster's volume for one light (world, homogeneous), into lightVolumes_ and uploaded.
+  void buildVolumes(Frame& f, const glm::vec4& light, const LightClip& clip,
+                    const std::vector<Plane>& pyramid, const std::vector<Plane>& frustum) {
+    // 3. Each caster's case, 0 where it misses the light's bounds; Lengyel's choice needs them all.
+    std::vector<int> cases;
+    bool anyInPyramid = false;
+    for (const Caster& c : casters_) {
+      const BoundingSphere w = worldBounds(c.bounds, meshes_.models()[c.object]);
+      const bool culled =
+          !std::isinf(clip.radius) && culledByLight(clip.centre, clip.radius, w.center, w.radius);
+      cases.push_back(culled ? 0 : shadowCase(pyramid, frustum, w.center, w.radius));
+      anyInPyramid |= cases.back() > 1;
+    }
+    const auto method = static_cast<ShadowMethod>(f.option("method"));
+    lightVolumes_.clear();
+    for (std::size_t c = 0; c < casters_.size(); ++c) {
+      const std::size_t first = lightVolumes_.size();
+      // A room is convex (solidsSeenFrom checks): nothing inside it is in its shadow, and its
+      // volume would hold infinity.
+      const bool room = solids_.room[casters_[c].object];
+      if (cases[c] != 0 && !room)
+        buildVolume(f, c, light, cases[c],
+                    recipeFor(method, cases[c], anyInPyramid, f.on("light-cap"), light.w == 0.0f));
+      recordCaster(f, casters_[c], cases[c], room, first);
+    }
+  }
+
+  // One caster's volume: 2, 4 and 5 above; where it could nest deeper than a count group's 127,
+  // in pieces of its light cap instead, each closed by both of Everitt and Kilgard's caps.
+  void buildVolume(Frame& f, std::size_t c, const glm::vec4& worldLight, int shadowCase,
+                   const Recipe& recipe) {
+    Caster& caster = casters_[c];
+    const PreparedCaster& p = scene_.objects[caster.object].caster;
+    const glm::vec4 light =
+        glm::inverse(meshes_.models()[caster.object]) * worldLight;  // in the caster's space
+    const std::vector<bool> lit = facesLight(p.mesh, light);
+    const std::vector<SilhouetteEdge> edges =
+        possibleSilhouette(caster, p, light, lit, f.option("silhouettes"));
+    VolumeIndices built = volumeOf(p, light, recipe, lit, edges, f.on("split"));
+    built.volume.shadowCase = shadowCase;
+    const std::size_t nesting = nestingOf(caster, p, light, lit, edges.size());
+    std::vector<LightVolume> volumes{{c, 0, built.volume, nesting, false}};
+    if (nesting > 127 && p.report.closed()) {
+      volumes.clear();
+      built.indices.clear();
+      built.split.clear();
+      const Recipe full{true, light.w == 0.0f ? DarkCapKind::None : DarkCapKind::Piece, true};
+      for (const std::vector<bool>& piece : litFacePieces(lit, 127)) {
+        VolumeIndices v = volumeOf(p, light, full, piece, silhouetteEdges(p.adjacency, piece), false);
+        v.volume.shadowCase = shadowCase;
+        volumes.push_back({c, built.indices.size(), v.volume,
+                           static_cast<std::size_t>(std::count(piece.begin(), piece.end(), true)), true});
+        built.indices.insert(built.indices.end(), v.indices.begin(), v.indices.end());
+      }
+    }
+    caster.gpu->upload(built.indices, built.split);
+    caster.volume = volumes.front().volume;
+    lightVolumes_.insert(lightVolumes_.end(), volumes.begin(), volumes.end());
+  }
+
+  // The most a caster's volume adds to a pixel's count (geometry/shadow_volume.h's nestingBound).
+  static std::size_t nestingOf(const Caster& c, const PreparedCaster& p, const glm::vec4& light,
+                               const std::vector<bool>& lit, std::size_t edges) {
+    if (c.convex) return 1;
+    const bool outside =
+        light.w == 0.0f || glm::distance(glm::vec3(light) / light.w, c.bounds.center) > c.bounds.radius;
+    // An open caster casts from both sides, and a fold of it changes the count by two.
+    if (!p.report.closed()) return nestingBound(p.mesh.indices.size() / 3, 2 * edges, false, outside);
+    return nestingBound(static_cast<std::size_t>(std::count(lit.begin(), lit.end(), true)), edges, false,
+                        outside);
+  }
+
+  // Every volume of the light counted; where their counts could add past 255 (an 8-bit count
+  // would wrap to 0, lit), in groups that cannot pass 127, each folded into bit 7.
+  void countVolumes(Frame& f, const glm::vec4& light) {
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // only the stencil changes
+    glDepthMask(GL_FALSE);                                // volumes are not surfaces
+    glDepthFunc(less_);                                   // in front of the scene: pass; behind: fail
+    glDisable(GL_CULL_FACE);                              // both faces in one draw, two-sided stencil
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, 0, 0xFF);  // every volume fragment counts
+    std::vector<std::size_t> nesting;
+    for (const LightVolume& lv : lightVolumes_) nesting.push_back(lv.nesting);
+    const CountPlan plan = countPlan(nesting);
+    for (int g = 0; g < plan.groups; ++g) {
+      if (plan.fold) glStencilMask(0x7F);  // bit 7 keeps what the groups before found
+      for (std::size_t k = 0; k < lightVolumes_.size(); ++k)
+        if (plan.group[k] == g) countVolume(f, lightVolumes_[k], light);
+      if (plan.fold) foldCount();
+    }
+    glStencilMask(0xFF);
+    if (plan.fold) f.count("count_groups", static_cast<std::uint64_t>(plan.groups));
+    glDisable(GL_STENCIL_TEST);
+    glEnable(GL_CULL_FACE);  // the scene's own culling again
+  }
+
+  // One volume counted: z-pass in front of the scene, or z-fail behind it.
+  void countVolume(const Frame& f, const LightVolume& lv, const glm::vec4& worldLight) {
+    const Caster& caster = casters_[lv.caster];
+    const CasterVolume& v = lv.volume;
+    setExtrusion(f, caster, worldLight);
+    if (!v.zfail) {  // z-pass: count the faces in front of the scene
+      glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);  // the eye ray enters a volume
+      glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);   // and leaves it
+      caster.gpu->draw(lv.first, v.sides);
+    } else {  // z-fail: count the faces behind the scene, the volume closed at both ends
+      glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);   // behind: the ray leaves a volume
+      glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);  // behind: it enters one
+      // The dark cap at infinity fails LESS (GREATER) by itself.
+      caster.gpu->draw(lv.first, v.sides + v.darkCap);
+      if (lv.first == 0) caster.gpu->drawSplit();
+      glDepthFunc(GL_NEVER);  // the light cap lies on the caster's surface: never in front of it
+      caster.gpu->draw(lv.first + v.sides + v.darkCap, v.lightCap);
+      glDepthFunc(less_);
+    }
+  }
+
+  // Where a group's count (bits 0-6) is not 0, the pixel is in a shadow: set bit 7 and clear the
+  // count for the next group. A rectangle over the whole window, testing only the stencil.
+  void foldCount() {
+    glStencilMask(0xFF);
+    glStencilFunc(GL_NOTEQUAL, 0x80, 0x7F);     // (0x80 & 0x7F) = 0 != count: counted something
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);  // 0x80: shadowed, count 0
+    glDisable(GL_DEPTH_TEST);
+    flat_.set("transform", glm::mat4(1.0f));  // the rectangle is in clip space already
+    window_.draw();
+    glEnable(GL_DEPTH_TEST);
+    glStencilFunc(GL_ALWAYS, 0, 0xFF);
+  }
+
+  // extrude.vert's uniforms for one caster: its model matrix and the light in its space.
+  void setExtrusion(const Frame& f, const Caster& c, const glm::vec4& worldLight) {
+    const glm::mat4& model = meshes_.models()[c.object];
+    extrude_.set("viewProjection", projection_ * f.view);
+    extrude_.set("model", model);
+    extrude_.set("light", glm::inverse(model) * worldLight);
+  }
+
+  // Every pass ends in the framework's framebuffer, where its snapshot, the stencil pictures and
+  // the shadow mask of light `mask` (-1: none) are read. Whatever Frame::pass and shadowMask leave
+  // bound, the lesson draws on into its target: the one place it binds it again.
+  void endPass(Frame& f, const char* name, const std::string& detail = {}, int mask = -1) {
+    target_->copyTo(framework_);
+    f.pass(name, detail);
+    if (mask >= 0) f.shadowMask("light-" + std::to_string(mask));
+    target_->bind();
+  }
+
+  // ---- the scene -------------------------------------------------------------------------------
+
+  void setScene(const Scene& scene) {
+    scene_ = scene;
+    fromFile_ = !scene.file.empty();
+    casters_.clear();
+    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+      SceneObject& o = scene_.objects[i];
+      if (!o.casts) continue;
+      if (o.caster.mesh.positions.empty()) o.caster = prepareCaster(o.mesh);
+      Caster& c = casters_.emplace_back();
+      c.object = i;
+      c.bounds = boundingSphereOf(o.caster.mesh.positions);
+      c.gpu = std::make_unique<DoubledCaster>(o.caster.mesh);
+      c.convex = isConvex(o.caster.mesh, o.caster.adjacency);
+    }
+    meshes_.set(scene_);
+  }
+
+  // The built-in scene follows the options that shape it.
+  void prepare(const Frame& f) {
+    if (fromFile_) return;
+    const int key = f.option("slices") * 4 + f.option("many") * 2 + f.option("moving");
+    if (key == sceneKey_) return;
+    sceneKey_ = key;
+    setScene(builtInScene(f.option("slices"), f.on("many"), f.on("moving")));
+  }
+
+  // Reversed float depth or GL's mapping, as the frame says; every depth comparison follows it.
+  // Reversed: window depth is clip z / w, 1 at the near plane and n/d at distance d, which the
+  // float depth buffer holds to about 2^-24 of d at every distance.
+  void setDepthMapping(const Frame& f) {
+    if (f.reversedDepth) {
+      glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // window depth = clip z / w: no 0.5 + 0.5 z/w
+      glClearDepth(0.0);                             // the farthest depth is 0 (infinity)
+      less_ = GL_GREATER;                            // nearer is greater
+      lequal_ = GL_GEQUAL;
+      projection_ = reversedDepth(f.projection);  // clip z' = (w - z) / 2: near 1, infinity 0
+    } else {                                      // GL's default clip control, as the framework leaves it
+      glClearDepth(1.0);
+      less_ = GL_LESS;
+      lequal_ = GL_LEQUAL;
+      projection_ = f.projection;
+    }
+  }
+
+  // Every light once, the chosen one last.
+  std::vector<int> lightOrder(const Frame& f) const {
+    const int n = static_cast<int>(scene_.lights.size());
+    const int last = std::min(f.option("light"), n - 1);
+    std::vector<int> order;
+    for (int i = 0; i < n; ++i)
+      if (i != last) order.push_back(i);
+    order.push_back(last);
+    return order;
+  }
+
+  // ---- the classroom's view --------------------------------------------------------------------
+
+  // The light sum doubled `times` times in the accumulation target, which is bound: a rectangle
+  // over the window blended as destination * 1 + destination. Levels 8 bits would round to
+  // 1/255 apart come out 2^times levels apart once shown, where the eye can tell them.
+  void stretchContrast(int times) {
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_CULL_FACE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_DST_COLOR, GL_ONE);
+    flat_.set("transform", glm::mat4(1.0f));  // the rectangle is in clip space already
+    flat_.set("colour", glm::vec4(1.0f));
+    for (int i = 0; i < times; ++i) window_.draw();
+    glDisable(GL_BLEND);
+    glEnable(GL_DEPTH_TEST);
+  }
+
+  // Where the stencil the frame ends with is not 0 (the light drawn last is blocked), a blue
+  // tint: a count that goes wrong shows as tint where the picture should have none, or none
+  // where it should. Tests the stencil, writes only colour.
+  void tintShadow() {
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_STENCIL_TEST);
+    glStencilMask(0x00);
+    glStencilFunc(GL_NOTEQUAL, 0, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    flat_.set("transform", glm::mat4(1.0f));
+    flat_.set("colour", glm::vec4(0.2f, 0.45f, 1.0f, 0.35f));
+    window_.draw();
+    glDisable(GL_BLEND);
+    glStencilMask(0xFF);
+    glDisable(GL_STENCIL_TEST);
+    glEnable(GL_DEPTH_TEST);
+  }
+
+  // The casters coloured by their case for the light drawn last (grey culled, green 1, amber 2,
+  // red 3), their volumes translucent in the same colour, their silhouettes as lines.
+  void drawOverlay(const Frame& f) {
+    const glm::vec4 caseColour[4] = {{0.5f, 0.5f, 0.5f, 0.55f},
+                                     {0.2f, 0.85f, 0.3f, 0.55f},
+                                     {1.0f, 0.7f, 0.1f, 0.55f},
+                                     {1.0f, 0.15f, 0.1f, 0.55f}};
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(lequal_);
+    glDepthMask(GL_FALSE);  // the overlay changes no depth (and, stencil test off, no stencil)
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    // The tint lies on the caster, drawn by another shader: pulled towards the eye, which is
+    // towards smaller depths in GL's mapping and larger ones reversed.
+    const float towardsEye = f.reversedDepth ? 1.0f : -1.0f;
+    glPolygonOffset(towardsEye, towardsEye);
+    for (const Caster& c : casters_) {
+      flat_.set("transform", projection_ * f.view * meshes_.models()[c.object]);
+      flat_.set("colour", caseColour[c.volume.shadowCase]);
+      meshes_.drawObject(c.object);
+    }
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_CULL_FACE);  // both sides of the volumes show
+    const SceneLight& light = scene_.lights[static_cast<std::size_t>(lightOrder(f).back())];
+    for (const Caster& c : casters_) {
+      const CasterVolume& v = c.volume;
+      if (v.shadowCase == 0) continue;
+      setExtrusion(f, c, light.position);
+      extrude_.set("colour", glm::vec4(glm::vec3(caseColour[v.shadowCase]), 0.12f));
+      c.gpu->draw(0, v.sides + v.darkCap + v.lightCap);
+      c.gpu->drawSplit();
+      extrude_.set("colour", glm::vec4(1.0f, 1.0f, 0.6f, 1.0f));
+      glDepthFunc(GL_ALWAYS);  // the silhouettes show through their casters
+      c.gpu->draw(v.sides + v.darkCap + v.lightCap, v.silhouette, GL_LINES);
+      glDepthFunc(lequal_);
+    }
+    glDisable(GL_BLEND);
+    glDepthFunc(less_);
+    glDepthMask(GL_TRUE);
+  }
+
+  // ---- test hooks: --stats counts, the volume-fill measure, the oracle ---------------------------
+
+  // The counts --stats reports, present in every frame whatever happens in it.
+  static void startCounts(Frame& f) {
+    for (const char* name :
+         {"lights_drawn", "lights_offscreen", "casters_culled", "casters_case1", "casters_case2",
+          "casters_case3", "casters_zfail", "side_triangles", "dark_cap_triangles", "light_cap_triangles",
+          "split_fan_triangles", "fan_spheres", "depth_bounds_used", "depth_bounds_skipped",
+          "objects_cut_by_near_plane", "rooms", "lights_buried"})
+      f.count(name, 0);
+  }
+
+  // What one caster cost the light being drawn: skipped (case 0, culled by the light's bounds; or
+  // a room), or its case, its silhouette query and its volumes, lightVolumes_ from `first` on.
+  void recordCaster(Frame& f, const Caster& c, int shadowCase, bool room, std::size_t first) const {
+    if (shadowCase == 0) return f.count("casters_culled");
+    if (room) return f.count("rooms");
+    f.count("casters_case" + std::to_string(shadowCase));
+    if (c.dual && f.option("silhouettes") == 2) {
+      f.count("dual_cells_visited", c.dual->lastQuery().cellsVisited);
+      f.count("dual_edges_tested", c.dual->lastQuery().edgesTested);
+    }
+    if (lightVolumes_[first].piece) f.count("volume_pieces", lightVolumes_.size() - first);
+    for (std::size_t k = first; k < lightVolumes_.size(); ++k) {
+      const CasterVolume& v = lightVolumes_[k].volume;
+      if (v.zfail) f.count("casters_zfail");
+      f.count("side_triangles", v.sides / 3);
+      f.count("dark_cap_triangles", v.darkCap / 3 + v.splitVertices / 3);
+      f.count("light_cap_triangles", v.lightCap / 3);
+      f.count("split_fan_triangles", v.splitTriangles);
+      f.count("fan_spheres", static_cast<std::uint64_t>(v.spheres));
+    }
+  }
+
+  // Per caster, for the light drawn last: its case (0 culled) and what its volume cost.
+  void recordLastLight(Frame& f) const {
+    for (const Caster& c : casters_) {
+      const std::string& name = scene_.objects[c.object].name;
+      f.count("case." + name, static_cast<std::uint64_t>(c.volume.shadowCase));
+      f.count("sides." + name, c.volume.sides / 3);
+      f.count("dark_cap." + name, c.volume.darkCap / 3 + c.volume.splitVertices / 3);
+      f.count("light_cap." + name, c.volume.lightCap / 3);
+    }
+  }
+
+  // The light's volumes once more, every fragment passing: nothing written, only counted by the
+  // pass's occlusion query. The same geometry and scissor as the shadows pass.
+  void drawVolumeFill(const glm::vec4& light) {
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_DEPTH_TEST);  // in front of the scene or behind, every fragment is fill
+    glDisable(GL_CULL_FACE);
+    for (const LightVolume& lv : lightVolumes_) {
+      const CasterVolume& v = lv.volume;
+      const glm::mat4& model = meshes_.models()[casters_[lv.caster].object];
+      extrude_.set("model", model);
+      extrude_.set("light", glm::inverse(model) * light);
+      casters_[lv.caster].gpu->draw(lv.first, v.sides + v.darkCap + v.lightCap);
+      if (lv.first == 0) casters_[lv.caster].gpu->drawSplit();
+    }
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_CULL_FACE);
+  }
+
+ public:
+  std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
+    if (!f.on("shadow") || scene_.lights.empty()) return std::nullopt;
+    const SceneLight& light = scene_.lights[static_cast<std::size_t>(lightOrder(f).back())];
+    ShadowCheck check{{}, light.position, [](std::uint8_t s) { return s == 0; }, true};
+    if (f.on("bounds")) check.lightRadius = light.radius;
+    for (const SceneObject& o : scene_.objects)
+      check.objects.push_back({&o.mesh, o.modelAt(f.time), o.casts, o.receives});
+    return check;
+  }
+
+ private:
+  SceneMeshes meshes_;  // the objects, shaded
+  Program extrude_, flat_;
+  GLenum less_ = GL_LESS, lequal_ = GL_LEQUAL;  // the depth tests of this frame's depth mapping
+  glm::mat4 projection_{1.0f};                  // what the frame draws with: f.projection, maybe reversed
+  Scene scene_;
+  bool fromFile_ = false;
+  int sceneKey_ = -1;
+  SolidsSeen solids_;  // this frame's rooms
+  std::vector<Caster> casters_;
+  std::vector<LightVolume> lightVolumes_;  // the current light's
+  GpuTriangles window_;                    // the whole window, for folding the count and the overlays
+  std::unique_ptr<AccumulationTarget> target_;
+  GLuint framework_ = 0;
+};
+
+// ---- the lesson's scene, cameras, options and variants ----------------------------------------
+
 constexpr int kManyLights = 32;
 // The ambient light, in hundredths, of the views from inside the sphere's shadow: there the warm
 // light is behind the sphere, and at the scene's 0.12 most of the picture is near black.
 constexpr int kShadowAmbient = 40;
+// Objects on the ground stand a little into it: a silhouette edge lying in the ground's plane
+// would extrude into a side face coplanar with the ground there, whose depth test is a toss-up.
+constexpr float kSunk = 0.01f;
 
-// An orbit camera placed at `eye`, looking at `target`.
-OrbitCamera lookingFrom(glm::vec3 eye, glm::vec3 target, float fovyDeg) {
-  OrbitCamera c;
-  const glm::vec3 back = eye - target;
+// In the spirit of the paper's figures: stairs, a grid of cubes, a sphere, two moving casters,
+// coloured attenuated point lights with finite bounds and one directional light.
+Scene builtInScene(int slices, bool many, bool moving) {
+  using glm::translate;
+  const glm::mat4 id(1.0f);
+  Scene s;
+  s.ambient = glm::vec3(0.12f);
+  s.objects.push_back(sceneObject("ground", makePlane(7.0f, 1), id, {0.75f, 0.74f, 0.7f}, false));
+  s.objects.push_back(
+      sceneObject("stairs", makeStairs(6, 2.2f, 0.3f, 0.45f),
+                  glm::rotate(translate(id, {-3.2f, 0.9f - kSunk, 0.25f}), glm::radians(90.0f), {0, 1, 0}),
+                  {0.7f, 0.6f, 0.5f}));
+  for (int i = 0; i < 9; ++i) {
+    const float column = static_cast<float>(i % 3), row = static_cast<float>(i / 3),
+                shade = 0.07f * static_cast<float>(i);
+    s.objects.push_back(sceneObject("cube-" + std::to_string(i), makeCube(0.28f),
+                                    translate(id, {1.0f + column, 0.28f - kSunk, -2.6f + row}),
+                                    {0.35f + shade, 0.5f, 0.85f - shade}));
+  }
+  s.objects.push_back(sceneObject("sphere", makeSphere(0.7f, slices, std::max(2, slices / 2)),
+                                  translate(id, {-0.4f, 1.3f, 1.2f}), {0.85f, 0.35f, 0.3f}));
+  if (moving) {
+    SceneObject torus = sceneObject("torus", makeTorus(0.5f, 0.16f, 32, 12),
+                                    translate(id, {2.0f, 2.1f, -1.6f}), {0.9f, 0.75f, 0.3f});
+    torus.spinAxis = glm::normalize(glm::vec3(1, 0, 0.4f));
+    torus.spinDegPerSecond = 25.0f;
+    torus.bob = 0.3f;
+    s.objects.push_back(torus);
+    SceneObject spinner =
+        sceneObject("spinner", makeCube(0.3f), translate(id, {-1.2f, 2.6f, -1.4f}), {0.5f, 0.8f, 0.55f});
+    spinner.spinAxis = glm::normalize(glm::vec3(1, 1, 0));
+    spinner.spinDegPerSecond = 40.0f;
+    s.objects.push_back(spinner);
+  }
+  if (many) {  // a ring of dim lights: each adds little, the sum is what the eye sees
+    for (int i = 0; i < kManyLights; ++i) {
+      const float a = glm::two_pi<float>() * static_cast<float>(i) / kManyLights;
+      const glm::vec3 hue = 0.5f + 0.5f * glm::vec3(std::cos(a), std::cos(a + 2.1f), std::cos(a + 4.2f));
+      s.lights.push_back({glm::vec4(4.0f * std::cos(a), 3.5f, 4.0f * std::sin(a), 1.0f), 0.06f * hue, 9.0f});
+    }
+  } else {
+    s.lights.push_back({{-2.0f, 4.6f, 2.4f, 1.0f}, {1.0f, 0.78f, 0.55f}, 10.0f});    // warm, above the sphere
+    s.lights.push_back({{3.2f, 3.2f, -0.4f, 1.0f}, {0.45f, 0.6f, 1.0f}, 5.5f});      // blue, over the cubes
+    s.lights.push_back({{-3.0f, 2.8f, -2.6f, 1.0f}, {0.5f, 1.0f, 0.55f}, 4.5f});     // green, small bounds
+    s.lights.push_back({{0.4f, 1.0f, 0.5f, 0.0f}, {0.3f, 0.3f, 0.32f}, kInfinity});  // directional
+  }
+  return s;
+}
+
+// A camera at `eye` looking at `target`, the far plane at infinity.
+OrbitCamera lookingFrom(glm::vec3 eye, glm::vec3 target) {
+  SceneCamera c;
+  c.eye = eye;
   c.target = target;
-  c.distance = glm::length(back);
-  c.elevationDeg = glm::degrees(std::asin(back.y / c.distance));
-  c.azimuthDeg = glm::degrees(std::atan2(back.x, back.z));
-  c.fovyDeg = fovyDeg;
-  c.farPlane = kInfinity;
-  return c;
+  c.fovyDeg = 70.0f;
+  return orbitCameraOf(c);
 }
 
 // Where the eye sits in the sphere's shadow from the warm light: on the line from the light
@@ -84,18 +771,14 @@ glm::vec3 underTheSphere() {
   const glm::vec3 light(-2.0f, 4.6f, 2.4f), sphere(-0.4f, 1.3f, 1.2f);
   return light + 1.3f * (sphere - light);
 }
-
-// The eye in that shadow looking away from the light, over the cubes: the near plane lies in
-// the sphere's volume, so z-pass alone fails; the sphere is in the occlusion pyramid but out of
-// view (case 2).
+// Looking away from the light, over the cubes: the near plane lies in the sphere's volume, so
+// z-pass alone fails; the sphere is in the occlusion pyramid but out of view (case 2).
 OrbitCamera eyeInShadow() {
-  return lookingFrom(underTheSphere(), {2.0f, 0.3f, -1.6f}, 70.0f);
+  return lookingFrom(underTheSphere(), {2.0f, 0.3f, -1.6f});
 }
-
-// Half a unit aside in the same shadow, looking up past the sphere at the stairs: the sphere is
-// in the pyramid and on screen (case 3), its light cap needed.
+// Half a unit aside, looking up past the sphere at the stairs: the sphere in case 3.
 OrbitCamera lookingUp() {
-  return lookingFrom(underTheSphere() + glm::vec3(0.5f, 0.0f, 0.0f), {-2.5f, 1.6f, 0.9f}, 70.0f);
+  return lookingFrom(underTheSphere() + glm::vec3(0.5f, 0.0f, 0.0f), {-2.5f, 1.6f, 0.9f});
 }
 
 LessonInfo lessonInfo() {
@@ -150,6 +833,7 @@ LessonInfo lessonInfo() {
   info.camera.azimuthDeg = 25.0f;
   info.camera.elevationDeg = 32.0f;
   info.camera.farPlane = kInfinity;
+  const std::pair<std::string, int> lit = {"ambient", kShadowAmbient}, tint = {"tint", 1};
   info.variants = {
       {"system", "the whole system: four lights, every caster by its case", {}},
       {"case-colours",
@@ -165,22 +849,14 @@ LessonInfo lessonInfo() {
        eyeInShadow()},
       {"looking-up",
        "the eye in the sphere's shadow, looking up past it: the sphere in case 3, its shadow tinted",
-       {{"ambient", kShadowAmbient}, {"tint", 1}},
+       {lit, tint},
        {},
        lookingUp()},
-      {"looking-up-colours",
-       "the same with the overlay",
-       {{"ambient", kShadowAmbient}, {"show", 1}},
-       {},
-       lookingUp()},
-      {"everitt-kilgard",
-       "always z-fail with full caps",
-       {{"method", 1}, {"ambient", kShadowAmbient}, {"tint", 1}},
-       {},
-       lookingUp()},
+      {"looking-up-colours", "the same with the overlay", {lit, {"show", 1}}, {}, lookingUp()},
+      {"everitt-kilgard", "always z-fail with full caps", {{"method", 1}, lit, tint}, {}, lookingUp()},
       {"lengyel",
        "z-pass when no caster is in the pyramid, else full z-fail",
-       {{"method", 2}, {"ambient", kShadowAmbient}, {"tint", 1}},
+       {{"method", 2}, lit, tint},
        {},
        lookingUp()},
       {"zpass-only",
@@ -190,7 +866,7 @@ LessonInfo lessonInfo() {
        eyeInShadow()},
       {"no-light-cap",
        "the case-3 sphere without its light cap: the count is wrong, the tint shows where",
-       {{"light-cap", 0}, {"ambient", kShadowAmbient}, {"tint", 1}},
+       {{"light-cap", 0}, lit, tint},
        {},
        lookingUp()},
       {"no-bounds", "no culling or scissor: the same shadows, more work", {{"bounds", 0}}},
@@ -200,705 +876,19 @@ LessonInfo lessonInfo() {
       {"many-lights-8bit",
        "the same accumulated in RGBA8: each light rounded, bands (stretched fourfold)",
        {{"many", 1}, {"float", 0}, {"stretch", 2}}},
+      {"pinf-fixed24",
+       "the whole system on the old path: a 24-bit fixed-point depth buffer with GL's depth mapping (Pinf)",
+       {},
+       {},
+       {},
+       false},
   };
-  info.variants.push_back({"pinf-fixed24",
-                           "the whole system on the old path: a 24-bit fixed-point depth buffer with GL's "
-                           "depth mapping (Pinf)",
-                           {},
-                           {},
-                           {},
-                           false});
   info.reversedDepth = true;  // a float depth buffer, reversed, where the driver has clip control
   info.sceneLightOption = "light";
   info.shadows = true;
   info.passes = {"ambient", "shadows", "volume-fill", "illumination", "overlay"};
   return info;
 }
-
-// ---- the scene ------------------------------------------------------------------------------
-
-// Objects on the ground stand a little into it: a silhouette edge lying in the ground's plane
-// would extrude into a side face coplanar with the ground there, whose depth test is a toss-up.
-constexpr float kSunk = 0.01f;
-
-// In the spirit of the paper's figures: stairs, a grid of cubes, a sphere, two moving casters,
-// coloured attenuated point lights with finite bounds and one directional light.
-Scene builtInScene(int slices, bool many, bool moving) {
-  using glm::translate;
-  const glm::mat4 id(1.0f);
-  Scene s;
-  s.ambient = glm::vec3(0.12f);
-  s.objects.push_back(sceneObject("ground", makePlane(7.0f, 1), id, {0.75f, 0.74f, 0.7f}, false));
-  s.objects.push_back(
-      sceneObject("stairs", makeStairs(6, 2.2f, 0.3f, 0.45f),
-                  glm::rotate(translate(id, {-3.2f, 0.9f - kSunk, 0.25f}), glm::radians(90.0f), {0, 1, 0}),
-                  {0.7f, 0.6f, 0.5f}));
-  for (int i = 0; i < 9; ++i) {
-    const float column = static_cast<float>(i % 3), row = static_cast<float>(i / 3),
-                shade = 0.07f * static_cast<float>(i);
-    s.objects.push_back(sceneObject("cube-" + std::to_string(i), makeCube(0.28f),
-                                    translate(id, {1.0f + column, 0.28f - kSunk, -2.6f + row}),
-                                    {0.35f + shade, 0.5f, 0.85f - shade}));
-  }
-  s.objects.push_back(sceneObject("sphere", makeSphere(0.7f, slices, std::max(2, slices / 2)),
-                                  translate(id, {-0.4f, 1.3f, 1.2f}), {0.85f, 0.35f, 0.3f}));
-  if (moving) {
-    SceneObject torus = sceneObject("torus", makeTorus(0.5f, 0.16f, 32, 12),
-                                    translate(id, {2.0f, 2.1f, -1.6f}), {0.9f, 0.75f, 0.3f});
-    torus.spinAxis = glm::normalize(glm::vec3(1, 0, 0.4f));
-    torus.spinDegPerSecond = 25.0f;
-    torus.bob = 0.3f;
-    s.objects.push_back(torus);
-    SceneObject spinner =
-        sceneObject("spinner", makeCube(0.3f), translate(id, {-1.2f, 2.6f, -1.4f}), {0.5f, 0.8f, 0.55f});
-    spinner.spinAxis = glm::normalize(glm::vec3(1, 1, 0));
-    spinner.spinDegPerSecond = 40.0f;
-    s.objects.push_back(spinner);
-  }
-  if (many) {  // a ring of dim lights: each adds little, the sum is what the eye sees
-    for (int i = 0; i < kManyLights; ++i) {
-      const float a = glm::two_pi<float>() * static_cast<float>(i) / kManyLights;
-      const glm::vec3 hue = 0.5f + 0.5f * glm::vec3(std::cos(a), std::cos(a + 2.1f), std::cos(a + 4.2f));
-      s.lights.push_back({glm::vec4(4.0f * std::cos(a), 3.5f, 4.0f * std::sin(a), 1.0f), 0.06f * hue, 9.0f});
-    }
-  } else {
-    s.lights.push_back({{-2.0f, 4.6f, 2.4f, 1.0f}, {1.0f, 0.78f, 0.55f}, 10.0f});    // warm, above the sphere
-    s.lights.push_back({{3.2f, 3.2f, -0.4f, 1.0f}, {0.45f, 0.6f, 1.0f}, 5.5f});      // blue, over the cubes
-    s.lights.push_back({{-3.0f, 2.8f, -2.6f, 1.0f}, {0.5f, 1.0f, 0.55f}, 4.5f});     // green, small bounds
-    s.lights.push_back({{0.4f, 1.0f, 0.5f, 0.0f}, {0.3f, 0.3f, 0.32f}, kInfinity});  // directional
-  }
-  return s;
-}
-
-// The lesson's own framebuffer: a float (or 8-bit) colour target for the light sum and a packed
-// depth/stencil buffer of the framework's format, so depth and stencil copy across unchanged (a
-// depth/stencil blit needs identical formats).
-class AccumulationTarget {
- public:
-  AccumulationTarget(glm::ivec2 size, bool floating, DepthFormat depth)
-      : size_(size), floating_(floating), depth_(depth) {
-    glGenFramebuffers(1, &fbo_);
-    glGenRenderbuffers(2, renderbuffers_);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[0]);
-    glRenderbufferStorage(GL_RENDERBUFFER, floating ? GL_RGBA16F : GL_RGBA8, size.x, size.y);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers_[0]);
-    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[1]);
-    glRenderbufferStorage(GL_RENDERBUFFER, depthStencilFormat(depth), size.x, size.y);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                              renderbuffers_[1]);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-      throw std::runtime_error("the accumulation framebuffer is incomplete");
-  }
-  ~AccumulationTarget() {
-    glDeleteFramebuffers(1, &fbo_);
-    glDeleteRenderbuffers(2, renderbuffers_);
-  }
-  AccumulationTarget(const AccumulationTarget&) = delete;
-  AccumulationTarget& operator=(const AccumulationTarget&) = delete;
-
-  bool fits(glm::ivec2 size, bool floating, DepthFormat depth) const {
-    return size == size_ && floating == floating_ && depth == depth_;
-  }
-  void bind() const {
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    glViewport(0, 0, size_.x, size_.y);
-  }
-  // Colour (clamped to 0..1 by the copy), depth and stencil into the framework's framebuffer,
-  // where the pass snapshots, the stencil pictures and the oracle read them.
-  void copyTo(GLuint framebuffer) const {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
-    glBlitFramebuffer(0, 0, size_.x, size_.y, 0, 0, size_.x, size_.y,
-                      GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT, GL_NEAREST);
-  }
-
- private:
-  glm::ivec2 size_;
-  bool floating_;
-  DepthFormat depth_;
-  GLuint fbo_ = 0, renderbuffers_[2] = {0, 0};
-};
-
-// ---- the lesson ---------------------------------------------------------------------------------
-
-class FastRobustShadows final : public Lesson {
- public:
-  explicit FastRobustShadows(const Scene* fromFile)
-      : light_("common/light.vert", "common/light.frag"),
-        extrude_("common/extrude.vert", "common/flat.frag"),
-        flat_("common/flat.vert", "common/flat.frag") {
-    if (fromFile) setScene(*fromFile);
-    window_.upload(
-        {{-1, -1, 0, 1}, {1, -1, 0, 1}, {1, 1, 0, 1}, {-1, -1, 0, 1}, {1, 1, 0, 1}, {-1, 1, 0, 1}});
-  }
-
-  void render(Frame& f) override {
-    prepare(f);
-    // The counts --stats reports, present in every frame whatever happens in it.
-    for (const char* name :
-         {"lights_drawn", "lights_offscreen", "casters_culled", "casters_case1", "casters_case2",
-          "casters_case3", "casters_zfail", "side_triangles", "dark_cap_triangles", "light_cap_triangles",
-          "split_fan_triangles", "fan_spheres", "depth_bounds_used", "depth_bounds_skipped",
-          "objects_cut_by_near_plane", "rooms", "lights_buried"})
-      f.count(name, 0);
-    for (Caster& c : casters_) c.volume = {};
-    GLint framework = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framework);
-    framework_ = static_cast<GLuint>(framework);
-    // The depth mapping before anything is cleared or drawn. Reversed (Frame::reversedDepth): window
-    // depth is clip z / w with no remapping, 1 at the near plane and n/d at distance d, which the
-    // float depth buffer holds to about 2^-24 of d at every distance. The framework's framebuffer
-    // has the matching depth format.
-    setDepthMapping(f);
-    const DepthFormat depthFormat = f.reversedDepth ? DepthFormat::Float32 : DepthFormat::Fixed24;
-    if (!target_ || !target_->fits(f.size, f.on("float"), depthFormat))
-      target_ = std::make_unique<AccumulationTarget>(f.size, f.on("float"), depthFormat);
-    target_->bind();
-    // Frustum planes, the near rectangle and the light's bounds read GL's convention, not the
-    // reversed matrix the frame draws with.
-    const glm::mat4 viewProjection = f.projection * f.view;
-    // A mirrored view turns every triangle round on screen: what faces the eye winds clockwise.
-    glFrontFace(glm::determinant(f.view) < 0.0f ? GL_CW : GL_CCW);
-
-    // ---- ambient: the depth buffer filled once, for every light ------------------------------
-    glClearColor(0.02f, 0.025f, 0.035f, 1.0f);
-    glClearStencil(0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);  // depth: the farthest
-    glEnable(GL_DEPTH_TEST);                                                     // the nearest surface wins
-    glDepthFunc(less_);
-    markCutByNearPlane(f, viewProjection);
-    // Rooms: a closed caster around the eye is a shell seen from inside (geometry/solid.h).
-    models_.clear();
-    for (const SceneObject& o : scene_.objects) models_.push_back(o.modelAt(f.time));
-    solids_ = solidsSeenFrom(scene_, models_, f.eye);
-    if (!solids_.refusal.empty()) throw UsageError(solids_.refusal);
-    glEnable(GL_CULL_FACE);  // a closed object's back faces are hidden, unless the near plane cuts it
-    const glm::vec3 ambient =
-        fromFile_ ? scene_.ambient : glm::vec3(0.01f * static_cast<float>(f.option("ambient")));
-    drawScene(f, glm::vec4(0, 1, 0, 0), glm::vec3(0), kInfinity, ambient);
-    endPass(f, "ambient");
-
-    // ---- per light: its shadow in the stencil, then its light where the stencil is 0 --------
-    const std::vector<int> order = lightOrder(f);
-    const std::array<glm::vec3, 4> nearRect = nearRectangle(viewProjection);
-    const std::vector<Plane> frustum = viewFrustumPlanes(viewProjection);
-    for (std::size_t k = 0; k < order.size(); ++k) {
-      const SceneLight& light = scene_.lights[static_cast<std::size_t>(order[k])];
-      const bool checked = k + 1 == order.size();
-      const std::string which = "light " + std::to_string(order[k]);  // the passes say whose they are
-      const LightClip clip =
-          lightClip(light.position, light.radius, f.on("bounds"), f.view, f.projection, f.size);
-      if (clip.offScreen()) {  // its bounds are off screen: it adds nothing
-        f.count("lights_offscreen");
-        continue;
-      }
-      f.count("lights_drawn");
-      glScissor(clip.scissor.x, clip.scissor.y, clip.scissor.width, clip.scissor.height);
-
-      // The stencil cleared everywhere, so what the frame ends with is this light's alone.
-      glStencilMask(0xFF);
-      glClear(GL_STENCIL_BUFFER_BIT);
-      if (f.on("shadow") && lightBuried(scene_, models_, solids_, light.position)) {
-        // A light inside a solid (outside the room the eye is in) lights nothing the eye sees:
-        // its picture is all shadow, a count of 1 everywhere, and it adds no light.
-        glClearStencil(1);
-        glClear(GL_STENCIL_BUFFER_BIT);
-        glClearStencil(0);
-        f.count("lights_buried");
-        endPass(f, "shadows", which);
-        f.shadowMask("light-" + std::to_string(order[k]));
-        target_->bind();  // reading the mask may have bound another framebuffer
-        continue;
-      }
-      glEnable(GL_SCISSOR_TEST);  // from here on only the light's rectangle is touched
-      const bool depthBounds = hasFeature(f.features, Feature::DepthBoundsTest) && clip.depthBounds;
-      if (depthBounds) {  // volumes skip pixels whose surface lies in front of or behind the sphere
-        glEnable(GL_DEPTH_BOUNDS_TEST_EXT);
-        if (f.reversedDepth)  // the same bounds in reversed depth: d -> 1 - d, the order swapped
-          glDepthBoundsEXT(1.0 - clip.depth.farthest, 1.0 - clip.depth.nearest);
-        else
-          glDepthBoundsEXT(clip.depth.nearest, clip.depth.farthest);
-      }
-      f.count(depthBounds ? "depth_bounds_used" : "depth_bounds_skipped");
-      if (f.on("shadow")) drawShadows(f, light, clip, nearRect, frustum, checked);
-      if (depthBounds) glDisable(GL_DEPTH_BOUNDS_TEST_EXT);
-      endPass(f, "shadows", which);
-      f.shadowMask("light-" + std::to_string(order[k]));
-      target_->bind();                       // reading the mask may have bound another framebuffer
-      if (f.on("fill") && f.on("shadow")) {  // the fill the stencil test saw, for --stats
-        drawVolumeFill();
-        endPass(f, "volume-fill", which);
-      }
-
-      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);  // the light's colour is added
-      glDepthMask(GL_FALSE);                            // onto the surfaces already there
-      glDepthFunc(GL_EQUAL);                            // exactly the ambient pass's surfaces
-      glEnable(GL_STENCIL_TEST);
-      glStencilFunc(GL_EQUAL, 0, 0xFF);        // outside every volume
-      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);  // the count stays for the next look
-      glEnable(GL_BLEND);
-      glBlendFunc(GL_ONE, GL_ONE);                                            // light adds up
-      drawScene(f, light.position, light.color, light.radius, glm::vec3(0));  // its own fall-off
-      glDisable(GL_BLEND);
-      glDisable(GL_STENCIL_TEST);
-      glDisable(GL_SCISSOR_TEST);
-      glDepthFunc(less_);
-      glDepthMask(GL_TRUE);
-      endPass(f, "illumination", which);
-    }
-
-    // Per caster, for the light drawn last: its case (0 culled) and what its volume cost.
-    for (const Caster& c : casters_) {
-      const std::string& name = scene_.objects[c.object].name;
-      f.count("case." + name, static_cast<std::uint64_t>(c.volume.shadowCase));
-      f.count("sides." + name, c.volume.sides / 3);
-      f.count("dark_cap." + name, c.volume.darkCap / 3 + c.volume.splitVertices / 3);
-      f.count("light_cap." + name, c.volume.lightCap / 3);
-    }
-
-    // ---- the classroom's view: cases, volumes, silhouettes of the light drawn last ------------
-    if (f.option("stretch") > 0) {  // in the accumulation target, before RGBA16F is clamped to 8 bits
-      stretchContrast(f.option("stretch"));
-      target_->copyTo(framework_);
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, framework_);
-    if (f.on("tint")) tintShadow();
-    if (f.on("show")) drawOverlay(f);
-    glDisable(GL_CULL_FACE);
-    glFrontFace(GL_CCW);  // GL's default again
-    f.pass("overlay");
-  }
-
-  std::optional<ShadowCheck> shadowCheck(const Frame& f) const override {
-    if (!f.on("shadow") || scene_.lights.empty()) return std::nullopt;
-    const SceneLight& light = scene_.lights[static_cast<std::size_t>(lightOrder(f).back())];
-    ShadowCheck check{{}, light.position, [](std::uint8_t s) { return s == 0; }, true};
-    if (f.on("bounds")) check.lightRadius = light.radius;
-    for (const SceneObject& o : scene_.objects)
-      check.objects.push_back({&o.mesh, o.modelAt(f.time), o.casts, o.receives});
-    return check;
-  }
-
- private:
-  struct Caster {
-    std::size_t object;
-    BoundingSphere bounds;  // object space
-    std::unique_ptr<DoubledCaster> gpu;
-    CasterVolume volume;  // for the light drawn last
-    bool convex = false;  // a convex caster's volume nests once
-    // Built on first use (--set silhouettes=1 or 2) and kept with the caster; the tree reads
-    // the prepared caster, so both live behind pointers that do not move.
-    std::unique_ptr<SilhouetteCaster> streaming;
-    std::unique_ptr<DualSilhouettes> dual;
-  };
-
-  // The possible silhouette edges of a closed caster for a light in its space, found the way
-  // --set silhouettes says; nothing for 0 (casterVolume's brute force) or an open caster.
-  const std::vector<SilhouetteEdge>* silhouetteOf(Frame& f, Caster& caster, const glm::vec4& local) {
-    const PreparedCaster& prepared = scene_.objects[caster.object].caster;
-    const int how = f.option("silhouettes");
-    if (how == 0 || !prepared.report.closed()) return nullptr;
-    if (!caster.streaming)
-      caster.streaming =
-          std::make_unique<SilhouetteCaster>(prepareSilhouettes(prepared.mesh, prepared.adjacency));
-    if (how == 1) {
-      facesLight(*caster.streaming, local, facing_);
-      silhouetteEdges(*caster.streaming, facing_, edges_);
-    } else {
-      if (!caster.dual) caster.dual = std::make_unique<DualSilhouettes>(*caster.streaming);
-      caster.dual->query(local, edges_);
-      f.count("dual_cells_visited", caster.dual->lastQuery().cellsVisited);
-      f.count("dual_edges_tested", caster.dual->lastQuery().edgesTested);
-    }
-    return &edges_;
-  }
-
-  void setScene(const Scene& scene) {
-    scene_ = scene;
-    fromFile_ = !scene.file.empty();
-    drawn_.clear();
-    closed_.clear();
-    objectBounds_.clear();
-    casters_.clear();
-    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-      SceneObject& o = scene_.objects[i];
-      drawn_.push_back(std::make_unique<GpuMesh>(o.mesh));
-      objectBounds_.push_back(boundingSphereOf(o.mesh.positions));
-      if (!o.casts) {
-        closed_.push_back(prepareCaster(o.mesh).report.closed());
-        continue;
-      }
-      if (o.caster.mesh.positions.empty()) o.caster = prepareCaster(o.mesh);
-      closed_.push_back(o.caster.report.closed());
-      casters_.push_back({i,
-                          boundingSphereOf(o.caster.mesh.positions),
-                          std::make_unique<DoubledCaster>(o.caster.mesh),
-                          {},
-                          isConvex(o.caster.mesh, o.caster.adjacency),
-                          nullptr,
-                          nullptr});
-    }
-  }
-
-  // The built-in scene follows the options that shape it.
-  void prepare(const Frame& f) {
-    if (fromFile_) return;
-    const int key = f.option("slices") * 4 + f.option("many") * 2 + f.option("moving");
-    if (key == sceneKey_) return;
-    sceneKey_ = key;
-    setScene(builtInScene(f.option("slices"), f.on("many"), f.on("moving")));
-  }
-
-  // Reversed float depth or GL's mapping, as the frame says; every depth comparison follows it.
-  void setDepthMapping(const Frame& f) {
-    if (f.reversedDepth) {
-      glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // window depth = clip z / w: no 0.5 + 0.5 z/w
-      glClearDepth(0.0);                             // the farthest depth is 0 (infinity)
-      less_ = GL_GREATER;                            // nearer is greater
-      lequal_ = GL_GEQUAL;
-      projection_ = reversedDepth(f.projection);  // clip z' = (w - z) / 2: near 1, infinity 0
-    } else {                                      // GL's default clip control, as the framework leaves it
-      glClearDepth(1.0);
-      less_ = GL_LESS;
-      lequal_ = GL_LEQUAL;
-      projection_ = f.projection;
-    }
-  }
-
-  // Every light once, the chosen one last.
-  std::vector<int> lightOrder(const Frame& f) const {
-    const int n = static_cast<int>(scene_.lights.size());
-    const int last = std::min(f.option("light"), n - 1);
-    std::vector<int> order;
-    for (int i = 0; i < n; ++i)
-      if (i != last) order.push_back(i);
-    order.push_back(last);
-    return order;
-  }
-
-  void endPass(Frame& f, const char* name, const std::string& detail = {}) {
-    target_->copyTo(framework_);
-    f.pass(name, detail);
-    target_->bind();  // the recorder binds the framework's framebuffer after each pass
-  }
-
-  // ---- the shadow volumes of one light ------------------------------------------------------
-
-  void drawShadows(Frame& f, const SceneLight& light, const LightClip& clip,
-                   const std::array<glm::vec3, 4>& nearRect, const std::vector<Plane>& frustum,
-                   bool checked) {
-    fillTime_ = f.time;
-    fillLight_ = light.position;
-    // Everything that decides each caster's volume first (Lengyel's choice needs all of them).
-    std::vector<BoundingSphere> world;
-    for (const Caster& c : casters_)
-      world.push_back(worldBounds(c.bounds, scene_.objects[c.object].modelAt(f.time)));
-    const std::vector<VolumeChoice> choices =
-        chooseVolumes(static_cast<ShadowMethod>(f.option("method")), world, clip.centre, clip.radius,
-                      occlusionPyramid(nearRect, light.position), frustum);
-
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // only the stencil changes
-    glDepthMask(GL_FALSE);                                // volumes are not surfaces
-    glDepthFunc(less_);                                   // in front of the scene: pass; behind: fail
-    glDisable(GL_CULL_FACE);                              // both faces in one draw, two-sided stencil
-    glEnable(GL_STENCIL_TEST);
-    glStencilFunc(GL_ALWAYS, 0, 0xFF);  // every volume fragment counts
-    lightVolumes_.clear();
-    for (std::size_t c = 0; c < casters_.size(); ++c) {
-      Caster& caster = casters_[c];
-      const SceneObject& o = scene_.objects[caster.object];
-      if (choices[c].shadowCase == 0) {
-        f.count("casters_culled");
-        if (checked) caster.volume = {};
-        continue;
-      }
-      if (solids_.room[caster.object]) {  // convex (solidsSeenFrom checks): nothing inside it is
-        f.count("rooms");                 // in its shadow, and its volume would hold infinity
-        if (checked) caster.volume = {};
-        continue;
-      }
-      f.count("casters_case" + std::to_string(choices[c].shadowCase));
-      const glm::vec4 local = glm::inverse(o.modelAt(f.time)) * light.position;  // in the caster's space
-      buildVolume(f, c, local, choices[c], checked);
-    }
-
-    // Count every volume; where their counts could add past 255 (an 8-bit count would wrap to 0,
-    // lit), in groups that cannot pass 127, each folded into bit 7 (geometry/shadow_volume.h).
-    std::vector<std::size_t> nesting;
-    for (const LightVolume& lv : lightVolumes_) nesting.push_back(lv.nesting);
-    const CountPlan plan = countPlan(nesting);
-    for (int g = 0; g < plan.groups; ++g) {
-      if (plan.fold) glStencilMask(0x7F);  // bit 7 keeps what the groups before found
-      for (std::size_t k = 0; k < lightVolumes_.size(); ++k)
-        if (plan.group[k] == g) countVolume(f, lightVolumes_[k], light.position);
-      if (plan.fold) foldCount();
-    }
-    glStencilMask(0xFF);
-    if (plan.fold) f.count("count_groups", static_cast<std::uint64_t>(plan.groups));
-    glDisable(GL_STENCIL_TEST);
-    glEnable(GL_CULL_FACE);  // the scene's own culling again
-  }
-
-  // One volume counted for the current light: a caster's whole volume, or one piece of it.
-  struct LightVolume {
-    std::size_t caster;
-    std::size_t first;  // into the caster's uploaded indices
-    CasterVolume volume;
-    std::size_t nesting;  // the most it can add to a pixel's count
-  };
-
-  // One caster's volume for this light, uploaded and listed in lightVolumes_: as the method
-  // chose it, or, where it could nest deeper than a count group's 127, in pieces of its light
-  // cap, each a full-caps z-fail volume (Everitt and Kilgard's caps close any piece).
-  void buildVolume(Frame& f, std::size_t c, const glm::vec4& local, const VolumeChoice& choice,
-                   bool checked) {
-    Caster& caster = casters_[c];
-    const PreparedCaster& prepared = scene_.objects[caster.object].caster;
-    VolumeIndices built = casterVolume(prepared, local, choice, f.on("light-cap"), f.on("split"), nullptr,
-                                       silhouetteOf(f, caster, local));
-    const CasterVolume& v = built.volume;
-    const bool closed = prepared.report.closed();
-    const bool outside = local.w == 0.0f || glm::distance(glm::vec3(local) / local.w, caster.bounds.center) >
-                                                caster.bounds.radius;
-    std::size_t nesting = 1;
-    if (!caster.convex) {
-      std::size_t lit = 0;
-      for (bool l : facesLight(prepared.mesh, local)) lit += l;
-      // An open caster casts from both sides, and a fold of it changes the count by two.
-      nesting = closed ? nestingBound(lit, v.silhouette / 2, false, outside)
-                       : nestingBound(prepared.mesh.indices.size() / 3, v.silhouette, false, outside);
-    }
-    std::vector<LightVolume> volumes{{c, 0, v, nesting}};
-    if (nesting > 127 && closed) {
-      volumes.clear();
-      std::vector<std::uint32_t> indices;
-      const VolumeChoice full{choice.shadowCase, true, true};
-      for (const std::vector<bool>& piece : litFacePieces(facesLight(prepared.mesh, local), 127)) {
-        const VolumeIndices p = casterVolume(prepared, local, full, true, false, &piece);
-        std::size_t pieceLit = 0;
-        for (bool l : piece) pieceLit += l;
-        volumes.push_back({c, indices.size(), p.volume, pieceLit});
-        indices.insert(indices.end(), p.indices.begin(), p.indices.end());
-      }
-      built = {volumes.empty() ? CasterVolume{} : volumes.front().volume, indices, {}};
-      f.count("volume_pieces", volumes.size());
-    }
-    caster.gpu->upload(built.indices, built.split);
-    for (const LightVolume& lv : volumes) {
-      const CasterVolume& pv = lv.volume;
-      if (pv.zfail) f.count("casters_zfail");
-      f.count("side_triangles", pv.sides / 3);
-      f.count("dark_cap_triangles", pv.darkCap / 3 + pv.splitVertices / 3);
-      f.count("light_cap_triangles", pv.lightCap / 3);
-      f.count("split_fan_triangles", pv.splitTriangles);
-      f.count("fan_spheres", static_cast<std::uint64_t>(pv.spheres));
-      lightVolumes_.push_back(lv);
-    }
-    if (checked) caster.volume = volumes.front().volume;
-  }
-
-  // One volume counted: z-pass in front of the scene, or z-fail behind it.
-  void countVolume(const Frame& f, const LightVolume& lv, const glm::vec4& worldLight) {
-    const Caster& caster = casters_[lv.caster];
-    const glm::mat4 model = scene_.objects[caster.object].modelAt(f.time);
-    const CasterVolume& v = lv.volume;
-    extrude_.set("viewProjection", projection_ * f.view);
-    extrude_.set("model", model);
-    extrude_.set("light", glm::inverse(model) * worldLight);
-    if (!v.zfail) {  // z-pass: count the faces in front of the scene
-      glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);  // the eye ray enters a volume
-      glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);   // and leaves it
-      caster.gpu->draw(lv.first, v.sides);
-    } else {  // z-fail: count the faces behind the scene, the volume closed at both ends
-      glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);   // behind: the ray leaves a volume
-      glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);  // behind: it enters one
-      caster.gpu->draw(lv.first,
-                       v.sides + v.darkCap);  // the dark cap at infinity fails LESS (GREATER) by itself
-      if (lv.first == 0) caster.gpu->drawSplit();
-      glDepthFunc(GL_NEVER);  // the light cap lies on the caster's surface: never in front of it
-      caster.gpu->draw(lv.first + v.sides + v.darkCap, v.lightCap);
-      glDepthFunc(less_);
-    }
-  }
-
-  // Where a group's count (bits 0-6) is not 0, the pixel is in a shadow: set bit 7 and clear the
-  // count for the next group. A rectangle over the whole window, testing only the stencil.
-  void foldCount() {
-    glStencilMask(0xFF);
-    glStencilFunc(GL_NOTEQUAL, 0x80, 0x7F);     // (0x80 & 0x7F) = 0 != count: counted something
-    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);  // 0x80: shadowed, count 0
-    glDisable(GL_DEPTH_TEST);
-    flat_.set("transform", glm::mat4(1.0f));  // the rectangle is in clip space already
-    window_.draw();
-    glEnable(GL_DEPTH_TEST);
-    glStencilFunc(GL_ALWAYS, 0, 0xFF);
-  }
-
-  // The light's volumes once more, every fragment passing: nothing written, only counted by the
-  // pass's occlusion query. The same geometry and scissor as the shadows pass.
-  void drawVolumeFill() {
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glDepthMask(GL_FALSE);
-    glDisable(GL_DEPTH_TEST);  // in front of the scene or behind, every fragment is fill
-    glDisable(GL_CULL_FACE);
-    for (const LightVolume& lv : lightVolumes_) {
-      const SceneObject& o = scene_.objects[casters_[lv.caster].object];
-      const CasterVolume& v = lv.volume;
-      extrude_.set("model", o.modelAt(fillTime_));
-      extrude_.set("light", glm::inverse(o.modelAt(fillTime_)) * fillLight_);
-      casters_[lv.caster].gpu->draw(lv.first, v.sides + v.darkCap + v.lightCap);
-      if (lv.first == 0) casters_[lv.caster].gpu->drawSplit();
-    }
-    glEnable(GL_DEPTH_TEST);
-    glEnable(GL_CULL_FACE);
-  }
-
-  // ---- the scene -----------------------------------------------------------------------------
-
-  void drawScene(const Frame& f, glm::vec4 light, glm::vec3 colour, float radius, glm::vec3 ambient) {
-    light_.set("viewProjection", projection_ * f.view);
-    light_.set("ambient", ambient);
-    light_.set("light", light);
-    light_.set("lightColour", colour);
-    light_.set("radius", std::isinf(radius) ? 1e30f : radius);
-    light_.set("twoSided", 1);  // a wall seen from inside a room is lit on the side the eye sees
-    light_.set("eye", f.eye);
-    light_.set("shininess", 32.0f);
-    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-      const SceneObject& o = scene_.objects[i];
-      light_.set("model", o.modelAt(f.time));
-      light_.set("colour", o.color);
-      if (closed_[i] && !cutByNearPlane_[i])
-        glEnable(GL_CULL_FACE);  // a closed object's back faces are hidden anyway
-      else  // an open surface is seen from both sides; a cut one shows its inside through the cut
-        glDisable(GL_CULL_FACE);
-      drawn_[i]->draw();
-    }
-    glEnable(GL_CULL_FACE);
-  }
-
-  // Back-face culling hides the inside of a closed object only while the object is whole on
-  // screen: where the near plane cuts it, the eye looks through the cut at its back faces, and
-  // culling them would show what lies behind the object instead. Only such objects pay for
-  // their back faces.
-  void markCutByNearPlane(Frame& f, const glm::mat4& viewProjection) {
-    const Plane nearPlane = viewFrustumPlanes(viewProjection)[4];
-    const float length = glm::length(glm::vec3(nearPlane));
-    cutByNearPlane_.assign(scene_.objects.size(), false);
-    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-      const BoundingSphere world = worldBounds(objectBounds_[i], scene_.objects[i].modelAt(f.time));
-      cutByNearPlane_[i] =
-          (glm::dot(glm::vec3(nearPlane), world.center) + nearPlane.w) / length < world.radius;
-      f.count("objects_cut_by_near_plane", cutByNearPlane_[i] && closed_[i] ? 1 : 0);
-    }
-  }
-
-  // The light sum doubled `times` times in the accumulation target, which is bound: a rectangle
-  // over the window blended as destination * 1 + destination. Levels 8 bits would round to
-  // 1/255 apart come out 2^times levels apart once shown, where the eye can tell them.
-  void stretchContrast(int times) {
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_STENCIL_TEST);
-    glDisable(GL_CULL_FACE);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_DST_COLOR, GL_ONE);
-    flat_.set("transform", glm::mat4(1.0f));  // the rectangle is in clip space already
-    flat_.set("colour", glm::vec4(1.0f));
-    for (int i = 0; i < times; ++i) window_.draw();
-    glDisable(GL_BLEND);
-    glEnable(GL_DEPTH_TEST);
-  }
-
-  // Where the stencil the frame ends with is not 0 (the light drawn last is blocked), a blue
-  // tint: a count that goes wrong shows as tint where the picture should have none, or none
-  // where it should. Tests the stencil, writes only colour.
-  void tintShadow() {
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_STENCIL_TEST);
-    glStencilMask(0x00);
-    glStencilFunc(GL_NOTEQUAL, 0, 0xFF);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    flat_.set("transform", glm::mat4(1.0f));
-    flat_.set("colour", glm::vec4(0.2f, 0.45f, 1.0f, 0.35f));
-    window_.draw();
-    glDisable(GL_BLEND);
-    glStencilMask(0xFF);
-    glDisable(GL_STENCIL_TEST);
-    glEnable(GL_DEPTH_TEST);
-  }
-
-  void drawOverlay(const Frame& f) {
-    const glm::vec4 caseColour[4] = {{0.5f, 0.5f, 0.5f, 0.55f},
-                                     {0.2f, 0.85f, 0.3f, 0.55f},
-                                     {1.0f, 0.7f, 0.1f, 0.55f},
-                                     {1.0f, 0.15f, 0.1f, 0.55f}};
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(lequal_);
-    glDepthMask(GL_FALSE);  // the overlay changes no depth (and, stencil test off, no stencil)
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    // The tint lies on the caster, drawn by another shader: pulled towards the eye, which is
-    // towards smaller depths in GL's mapping and larger ones reversed.
-    const float towardsEye = f.reversedDepth ? 1.0f : -1.0f;
-    glPolygonOffset(towardsEye, towardsEye);
-    for (const Caster& c : casters_) {
-      const SceneObject& o = scene_.objects[c.object];
-      flat_.set("transform", projection_ * f.view * o.modelAt(f.time));
-      flat_.set("colour", caseColour[c.volume.shadowCase]);
-      drawn_[c.object]->draw();
-    }
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    glDisable(GL_CULL_FACE);  // both sides of the volumes show
-    const SceneLight& light = scene_.lights[static_cast<std::size_t>(lightOrder(f).back())];
-    for (const Caster& c : casters_) {
-      if (c.volume.shadowCase == 0) continue;
-      const glm::mat4 model = scene_.objects[c.object].modelAt(f.time);
-      extrude_.set("viewProjection", projection_ * f.view);
-      extrude_.set("model", model);
-      extrude_.set("light", glm::inverse(model) * light.position);
-      glm::vec4 colour = caseColour[c.volume.shadowCase];
-      colour.a = 0.12f;
-      extrude_.set("colour", colour);
-      c.gpu->draw(0, c.volume.sides + c.volume.darkCap + c.volume.lightCap);
-      c.gpu->drawSplit();
-      extrude_.set("colour", glm::vec4(1.0f, 1.0f, 0.6f, 1.0f));
-      glDepthFunc(GL_ALWAYS);  // the silhouettes show through their casters
-      c.gpu->draw(c.volume.sides + c.volume.darkCap + c.volume.lightCap, c.volume.silhouette, GL_LINES);
-      glDepthFunc(lequal_);
-    }
-    glDisable(GL_BLEND);
-    glDepthFunc(less_);
-    glDepthMask(GL_TRUE);
-  }
-
-  Program light_, extrude_, flat_;
-  GLenum less_ = GL_LESS, lequal_ = GL_LEQUAL;  // the depth tests of this frame's depth mapping
-  glm::mat4 projection_{1.0f};                  // what the frame draws with: f.projection, maybe reversed
-  Scene scene_;
-  bool fromFile_ = false;
-  int sceneKey_ = -1;
-  std::vector<std::unique_ptr<GpuMesh>> drawn_;
-  std::vector<bool> closed_;                  // per object: a closed mesh, drawn with back faces culled
-  std::vector<BoundingSphere> objectBounds_;  // per object, object space
-  std::vector<glm::mat4> models_;             // per object, this frame
-  SolidsSeen solids_;                         // this frame's rooms
-  std::vector<bool> cutByNearPlane_;          // per object, this frame: back faces drawn
-  std::vector<Caster> casters_;
-  std::vector<LightVolume> lightVolumes_;  // the current light's
-  std::vector<std::uint8_t> facing_;       // silhouetteOf's facing flags and edges, reused
-  std::vector<SilhouetteEdge> edges_;
-  GpuTriangles window_;    // the whole window, for folding the count
-  double fillTime_ = 0.0;  // and what drawVolumeFill needs
-  glm::vec4 fillLight_{0.0f};
-  std::unique_ptr<AccumulationTarget> target_;
-  GLuint framework_ = 0;
-};
 
 }  // namespace
 

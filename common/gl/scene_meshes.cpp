@@ -1,0 +1,61 @@
+#include "gl/scene_meshes.h"
+
+#include <cmath>
+
+#include "geometry/fast_shadows.h"
+
+namespace stencil {
+
+SceneMeshes::SceneMeshes() : light_("common/light.vert", "common/light.frag") {}
+
+void SceneMeshes::set(const Scene& scene) {
+  meshes_.clear();
+  closed_.clear();
+  bounds_.clear();
+  for (const SceneObject& o : scene.objects) {
+    meshes_.push_back(std::make_unique<GpuMesh>(o.mesh));
+    bounds_.push_back(boundingSphereOf(o.mesh.positions));
+    const bool prepared = o.casts && !o.caster.mesh.positions.empty();
+    closed_.push_back(prepared ? o.caster.report.closed() : prepareCaster(o.mesh).report.closed());
+  }
+}
+
+std::size_t SceneMeshes::place(const Scene& scene, double time, const glm::mat4& viewProjection) {
+  const Plane nearPlane = viewFrustumPlanes(viewProjection)[4];
+  const float length = glm::length(glm::vec3(nearPlane));
+  models_.clear();
+  cutByNearPlane_.assign(scene.objects.size(), false);
+  std::size_t closedCut = 0;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    models_.push_back(scene.objects[i].modelAt(time));
+    const BoundingSphere world = worldBounds(bounds_[i], models_[i]);
+    cutByNearPlane_[i] = (glm::dot(glm::vec3(nearPlane), world.center) + nearPlane.w) / length < world.radius;
+    closedCut += cutByNearPlane_[i] && closed_[i] ? 1 : 0;
+  }
+  return closedCut;
+}
+
+void SceneMeshes::draw(const Scene& scene, const glm::mat4& viewProjection, const glm::vec3& eye,
+                       const glm::vec4& light, const glm::vec3& colour, float radius,
+                       const glm::vec3& ambient) {
+  light_.set("viewProjection", viewProjection);
+  light_.set("ambient", ambient);
+  light_.set("light", light);
+  light_.set("lightColour", colour);
+  light_.set("radius", std::isinf(radius) ? 1e30f : radius);
+  light_.set("twoSided", 1);  // a wall seen from inside a room is lit on the side the eye sees
+  light_.set("eye", eye);
+  light_.set("shininess", 32.0f);
+  for (std::size_t i = 0; i < meshes_.size(); ++i) {
+    light_.set("model", models_[i]);
+    light_.set("colour", scene.objects[i].color);
+    if (closed_[i] && !cutByNearPlane_[i])
+      glEnable(GL_CULL_FACE);  // a closed object's back faces are hidden anyway
+    else                       // an open surface is seen from both sides; a cut one through the cut
+      glDisable(GL_CULL_FACE);
+    meshes_[i]->draw();
+  }
+  glEnable(GL_CULL_FACE);
+}
+
+}  // namespace stencil
