@@ -126,9 +126,7 @@ class SoftShadows final : public Lesson {
           "penumbra_width_z_milli", "penumbra_width_z_predicted_milli", "wedges", "wedge_triangles",
           "reference_rays_per_pixel"})
       f.count(name, 0);
-    GLint framework = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framework);
-    framework_ = static_cast<GLuint>(framework);
+    framework_ = f.framebuffer();
     size_ = f.size;
     const GLenum format = f.option("float") == 1   ? GL_RGBA32F
                           : f.option("float") == 2 ? GL_RGBA16F
@@ -237,7 +235,7 @@ class SoftShadows final : public Lesson {
     blit(target_->fbo(), framework_, f.size,
          GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     f.pass(name);
-    target_->bind();  // the recorder binds the framework's framebuffer after each pass
+    target_->bind();  // the blit left the framework's framebuffer bound
   }
 
   // The light's share: 1/N of it, or all of it without the scale.

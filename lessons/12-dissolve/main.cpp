@@ -102,9 +102,7 @@ class Dissolve final : public Lesson {
                        std::to_string(f.size.x) + "x" + std::to_string(f.size.y));
     const int k = dissolveState(f);
     f.count("state", static_cast<std::uint64_t>(k));
-    GLint framebuffer = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-    framebuffer_ = static_cast<GLuint>(framebuffer);
+    framebuffer_ = f.framebuffer();
 
     // 1. The pattern, once: written only when the pattern or the size changes. The stencil keeps
     // it from frame to frame (and keeps what the brush sprayed into it).

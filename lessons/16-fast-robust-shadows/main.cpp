@@ -192,9 +192,7 @@ class FastRobustShadows final : public Lesson {
   void render(Frame& f) override {
     prepare(f);
     startCounts(f);
-    GLint framework = 0;  // the framework's framebuffer, bound now: every pass ends copied into it
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framework);
-    framework_ = static_cast<GLuint>(framework);
+    framework_ = f.framebuffer();  // every pass ends copied into it
     setDepthMapping(f);  // before anything is cleared or drawn
     const ColourFormat colour = f.on("float") ? ColourFormat::RGBA16F : ColourFormat::RGBA8;
     const DepthFormat depth = f.reversedDepth ? DepthFormat::Float32 : DepthFormat::Fixed24;
