@@ -59,7 +59,6 @@ using namespace stencil;
 
 namespace {
 
-constexpr float kInfinity = std::numeric_limits<float>::infinity();
 constexpr int kManyLights = 32;
 // The ambient light, in hundredths, of the views from inside the sphere's shadow: there the warm
 // light is behind the sphere, and at the scene's 0.12 most of the picture is near black.
@@ -382,7 +381,7 @@ class FastRobustShadows final : public Lesson {
     // ---- per light: its shadow in the stencil, then its light where the stencil is 0 --------
     const std::vector<int> order = lightOrder(f);
     const std::array<glm::vec3, 4> nearRect = nearRectangle(viewProjection);
-    const std::vector<Plane> frustum = viewFrustumPlanes(viewProjection);
+    const Frustum frustum = viewFrustum(viewProjection, false);
     for (std::size_t k = 0; k < order.size(); ++k) {
       const SceneLight& light = scene_.lights[static_cast<std::size_t>(order[k])];
       const bool checked = k + 1 == order.size();
@@ -438,8 +437,8 @@ class FastRobustShadows final : public Lesson {
       glStencilFunc(GL_EQUAL, 0, 0xFF);        // outside every volume
       glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);  // the count stays for the next look
       glEnable(GL_BLEND);
-      glBlendFunc(GL_ONE, GL_ONE);                                            // light adds up
-      drawScene(f, light.position, light.color, light.radius, glm::vec3(0));  // its own fall-off
+      glBlendFunc(GL_ONE, GL_ONE);                                             // light adds up
+      drawScene(f, light.position, light.colour, light.radius, glm::vec3(0));  // its own fall-off
       glDisable(GL_BLEND);
       glDisable(GL_STENCIL_TEST);
       glDisable(GL_SCISSOR_TEST);
@@ -498,13 +497,13 @@ class FastRobustShadows final : public Lesson {
   const std::vector<SilhouetteEdge>* silhouetteOf(Frame& f, Caster& caster, const glm::vec4& local) {
     const PreparedCaster& prepared = scene_.objects[caster.object].caster;
     const int how = f.option("silhouettes");
-    if (how == 0 || !prepared.report.closed()) return nullptr;
+    if (how == 0 || !prepared.report.closedManifold()) return nullptr;
     if (!caster.streaming)
       caster.streaming =
           std::make_unique<SilhouetteCaster>(prepareSilhouettes(prepared.mesh, prepared.adjacency));
     if (how == 1) {
       facesLight(*caster.streaming, local, facing_);
-      silhouetteEdges(*caster.streaming, facing_, edges_);
+      possibleSilhouetteEdges(*caster.streaming, facing_, edges_);
     } else {
       if (!caster.dual) caster.dual = std::make_unique<DualSilhouettes>(*caster.streaming);
       caster.dual->query(local, edges_);
@@ -526,11 +525,11 @@ class FastRobustShadows final : public Lesson {
       drawn_.push_back(std::make_unique<GpuMesh>(o.mesh));
       objectBounds_.push_back(boundingSphereOf(o.mesh.positions));
       if (!o.casts) {
-        closed_.push_back(prepareCaster(o.mesh).report.closed());
+        closed_.push_back(prepareCaster(o.mesh).report.closedManifold());
         continue;
       }
       if (o.caster.mesh.positions.empty()) o.caster = prepareCaster(o.mesh);
-      closed_.push_back(o.caster.report.closed());
+      closed_.push_back(o.caster.report.closedManifold());
       casters_.push_back({i,
                           boundingSphereOf(o.caster.mesh.positions),
                           std::make_unique<DoubledCaster>(o.caster.mesh),
@@ -586,8 +585,7 @@ class FastRobustShadows final : public Lesson {
   // ---- the shadow volumes of one light ------------------------------------------------------
 
   void drawShadows(Frame& f, const SceneLight& light, const LightClip& clip,
-                   const std::array<glm::vec3, 4>& nearRect, const std::vector<Plane>& frustum,
-                   bool checked) {
+                   const std::array<glm::vec3, 4>& nearRect, const Frustum& frustum, bool checked) {
     fillTime_ = f.time;
     fillLight_ = light.position;
     // Everything that decides each caster's volume first (Lengyel's choice needs all of them).
@@ -658,8 +656,8 @@ class FastRobustShadows final : public Lesson {
     VolumeIndices built = casterVolume(prepared, local, choice, f.on("light-cap"), f.on("split"), nullptr,
                                        silhouetteOf(f, caster, local));
     const CasterVolume& v = built.volume;
-    const bool closed = prepared.report.closed();
-    const bool outside = local.w == 0.0f || glm::distance(glm::vec3(local) / local.w, caster.bounds.center) >
+    const bool closed = prepared.report.closedManifold();
+    const bool outside = local.w == 0.0f || glm::distance(glm::vec3(local) / local.w, caster.bounds.centre) >
                                                 caster.bounds.radius;
     std::size_t nesting = 1;
     if (!caster.convex) {
@@ -768,7 +766,7 @@ class FastRobustShadows final : public Lesson {
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
       const SceneObject& o = scene_.objects[i];
       light_.set("model", o.modelAt(f.time));
-      light_.set("colour", o.color);
+      light_.set("colour", o.colour);
       if (closed_[i] && !cutByNearPlane_[i])
         glEnable(GL_CULL_FACE);  // a closed object's back faces are hidden anyway
       else  // an open surface is seen from both sides; a cut one shows its inside through the cut
@@ -783,13 +781,13 @@ class FastRobustShadows final : public Lesson {
   // culling them would show what lies behind the object instead. Only such objects pay for
   // their back faces.
   void markCutByNearPlane(Frame& f, const glm::mat4& viewProjection) {
-    const Plane nearPlane = viewFrustumPlanes(viewProjection)[4];
+    const Plane nearPlane = viewFrustum(viewProjection, false).planes[4];
     const float length = glm::length(glm::vec3(nearPlane));
     cutByNearPlane_.assign(scene_.objects.size(), false);
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
       const BoundingSphere world = worldBounds(objectBounds_[i], scene_.objects[i].modelAt(f.time));
       cutByNearPlane_[i] =
-          (glm::dot(glm::vec3(nearPlane), world.center) + nearPlane.w) / length < world.radius;
+          (glm::dot(glm::vec3(nearPlane), world.centre) + nearPlane.w) / length < world.radius;
       f.count("objects_cut_by_near_plane", cutByNearPlane_[i] && closed_[i] ? 1 : 0);
     }
   }

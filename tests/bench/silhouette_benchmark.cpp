@@ -1,7 +1,7 @@
 // Silhouette extraction against a plain memory scan of the same data (Google Benchmark).
 //
 // mesh: facesLight (every triangle's three indices and positions: does it face the light?) then
-// silhouetteEdges (every edge of the prepared caster's adjacency: do its two faces disagree?), on
+// possibleSilhouetteEdges (every edge of the prepared caster's adjacency: do its two faces disagree?), on
 // welded spheres and tori of about 1k to 1M triangles. prepared: the same edges from a
 // SilhouetteCaster (face normals and first corners precomputed once, streamed by the facing pass;
 // each edge's two faces read once against one-byte flags). scan: the arrays the mesh version
@@ -99,7 +99,7 @@ std::uint32_t sumWords(const std::vector<T>& v) {
   return s0 + s1 + s2 + s3;
 }
 
-// What both benchmarks read, in bytes: indices and positions (facesLight), edges (silhouetteEdges).
+// What both benchmarks read, in bytes: indices and positions (facesLight), edges (possibleSilhouetteEdges).
 std::int64_t bytesRead(const PreparedCaster& c) {
   return static_cast<std::int64_t>(c.mesh.indices.size() * sizeof(std::uint32_t) +
                                    c.mesh.positions.size() * sizeof(glm::vec3) +
@@ -139,7 +139,7 @@ void meshVersion(benchmark::State& state, const std::string& shape, const Size& 
   std::size_t edges = 0;
   for (auto _ : state) {
     const std::vector<bool> lit = facesLight(c.mesh, light);
-    const std::vector<SilhouetteEdge> silhouette = silhouetteEdges(c.adjacency, lit);
+    const std::vector<SilhouetteEdge> silhouette = possibleSilhouetteEdges(c.adjacency, lit);
     edges = silhouette.size();
     benchmark::DoNotOptimize(silhouette.data());
   }
@@ -155,7 +155,7 @@ void prepared(benchmark::State& state, const std::string& shape, const Size& siz
   std::vector<SilhouetteEdge> silhouette;
   for (auto _ : state) {
     facesLight(c, light, lit);
-    silhouetteEdges(c, lit, silhouette);
+    possibleSilhouetteEdges(c, lit, silhouette);
     benchmark::DoNotOptimize(silhouette.data());
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(c.faceCount()));
@@ -180,7 +180,7 @@ void edgepass(benchmark::State& state, const std::string& shape, const Size& siz
   std::vector<SilhouetteEdge> silhouette;
   facesLight(c, light, lit);
   for (auto _ : state) {
-    silhouetteEdges(c, lit, silhouette);
+    possibleSilhouetteEdges(c, lit, silhouette);
     benchmark::DoNotOptimize(silhouette.data());
   }
   state.counters["triangles"] = static_cast<double>(c.faceCount());
@@ -224,7 +224,7 @@ void byLight(benchmark::State& state, const std::string& shape, const Size& size
       tree->query(l, silhouette);
     } else {
       facesLight(c, l, lit);
-      silhouetteEdges(c, lit, silhouette);
+      possibleSilhouetteEdges(c, lit, silhouette);
     }
     benchmark::DoNotOptimize(silhouette.data());
     edges += silhouette.size();
@@ -271,7 +271,7 @@ void edges(benchmark::State& state, const std::string& shape, const Size& size) 
   const PreparedCaster& c = caster(shape, size);
   const std::vector<bool> lit = facesLight(c.mesh, light);
   for (auto _ : state) {
-    const std::vector<SilhouetteEdge> silhouette = silhouetteEdges(c.adjacency, lit);
+    const std::vector<SilhouetteEdge> silhouette = possibleSilhouetteEdges(c.adjacency, lit);
     benchmark::DoNotOptimize(silhouette.data());
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(c.mesh.triangleCount()));
@@ -292,7 +292,7 @@ void scan(benchmark::State& state, const std::string& shape, const Size& size) {
 // A silhouette of a closed mesh is made of closed loops: every vertex starts as many of its
 // directed edges as it ends.
 bool closedLoops(const PreparedCaster& c) {
-  const std::vector<SilhouetteEdge> edges = silhouetteEdges(c.adjacency, facesLight(c.mesh, light));
+  const std::vector<SilhouetteEdge> edges = possibleSilhouetteEdges(c.adjacency, facesLight(c.mesh, light));
   std::vector<int> balance(c.mesh.positions.size(), 0);
   for (const SilhouetteEdge& e : edges) {
     ++balance[e.v0];
@@ -306,8 +306,8 @@ bool closedLoops(const PreparedCaster& c) {
 // The prepared version gives the mesh version's edges, in the same order and direction.
 bool sameAsMeshVersion(const std::string& shape, const Size& size) {
   const PreparedCaster& c = caster(shape, size);
-  const std::vector<SilhouetteEdge> a = silhouetteEdges(c.adjacency, facesLight(c.mesh, light)),
-                                    b = silhouetteEdges(silhouetteCaster(shape, size), light);
+  const std::vector<SilhouetteEdge> a = possibleSilhouetteEdges(c.adjacency, facesLight(c.mesh, light)),
+                                    b = possibleSilhouetteEdges(silhouetteCaster(shape, size), light);
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i)
     if (a[i].v0 != b[i].v0 || a[i].v1 != b[i].v1) return false;
@@ -321,7 +321,7 @@ bool dualAsPrepared(const std::string& shape, const Size& size) {
   std::vector<SilhouetteEdge> found;
   auto same = [&](const glm::vec4& l) {
     dualTree(shape, size).query(l, found);
-    const std::vector<SilhouetteEdge> expected = silhouetteEdges(c, l);
+    const std::vector<SilhouetteEdge> expected = possibleSilhouetteEdges(c, l);
     if (found.size() != expected.size() || expected.empty()) return false;
     for (std::size_t i = 0; i < found.size(); ++i)
       if (found[i].v0 != expected[i].v0 || found[i].v1 != expected[i].v1) return false;
@@ -385,7 +385,8 @@ void writeTable(const TableReporter& reporter, const std::string& file) {
   std::ofstream out(file);
   out << "# Silhouette extraction against a memory scan\n\n"
       << "The possible silhouette edges of welded spheres and tori for a point light at (3, 4, 5), two\n"
-      << "ways (common/geometry/shadow_volume.h): **mesh**, `facesLight` + `silhouetteEdges` on the mesh "
+      << "ways (common/geometry/shadow_volume.h): **mesh**, `facesLight` + `possibleSilhouetteEdges` on the "
+         "mesh "
          "and\n"
       << "its adjacency (a gathered cross product per triangle, bit flags); **prepared**, the same two\n"
       << "passes on a `SilhouetteCaster` (face normals and first corners precomputed once and streamed,\n"
@@ -394,10 +395,12 @@ void writeTable(const TableReporter& reporter, const std::string& file) {
       << "**scan-prepared** the six per-face floats and the edges' face pairs (prepared). Single thread,\n"
       << "CPU time per call, the median of 3 repetitions interleaved at random, all in one benchmark run;\n"
       << "GB/s counts those arrays' bytes once per call.\n"
-      << "The halves: facesLight / the facing pass, silhouetteEdges / the edge pass. prepare: building\n"
+      << "The halves: facesLight / the facing pass, possibleSilhouetteEdges / the edge pass. prepare: "
+         "building\n"
       << "the SilhouetteCaster, once per caster. Written by `cmake --build build --target\n"
       << "silhouette-benchmark` (every repetition's time in silhouette-extraction.csv).\n\n"
-      << "| shape | triangles | silhouette edges | mesh ns/tri | (facesLight + silhouetteEdges) | scan "
+      << "| shape | triangles | silhouette edges | mesh ns/tri | (facesLight + possibleSilhouetteEdges) | "
+         "scan "
          "ns/tri | "
          "mesh / scan | prepared ns/tri | (facing + edge pass) | prepared GB/s | scan-prepared ns/tri | "
          "scan-prepared GB/s | **prepared / scan-prepared** | prepared / scan | prepare ns/tri (once) |\n"
