@@ -5,6 +5,8 @@
 // two faces faces the light) and the check that a mesh is closed before
 // z-fail capping is trusted. Indices must refer to welded vertices
 // (weldByPosition), otherwise seams show up as border edges.
+//
+// Depends on: the standard library only (C++17).
 
 #include <cstddef>
 #include <cstdint>

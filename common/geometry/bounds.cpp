@@ -13,7 +13,7 @@ bool Aabb::empty() const {
   return min.x > max.x || min.y > max.y || min.z > max.z;
 }
 
-glm::vec3 Aabb::center() const {
+glm::vec3 Aabb::centre() const {
   return empty() ? glm::vec3(0.0f) : (min + max) * 0.5f;
 }
 
@@ -63,11 +63,11 @@ std::size_t farthestFrom(const std::vector<glm::vec3>& points, glm::vec3 from) {
   return best;
 }
 
-// Radius that really contains every point around `center`, measured in double.
-float enclosingRadius(const std::vector<glm::vec3>& points, glm::vec3 center) {
+// Radius that really contains every point around `centre`, measured in double.
+float enclosingRadius(const std::vector<glm::vec3>& points, glm::vec3 centre) {
   double farthest = 0.0;
   for (const glm::vec3& p : points) {
-    farthest = std::max(farthest, glm::length(glm::dvec3(p) - glm::dvec3(center)));
+    farthest = std::max(farthest, glm::length(glm::dvec3(p) - glm::dvec3(centre)));
   }
   const auto radius = static_cast<float>(farthest);
   // The float cast can round down, and callers compare float distances.
@@ -75,22 +75,22 @@ float enclosingRadius(const std::vector<glm::vec3>& points, glm::vec3 center) {
          std::numeric_limits<float>::denorm_min();
 }
 
-glm::vec3 ritterCenter(const std::vector<glm::vec3>& points) {
+glm::vec3 ritterCentre(const std::vector<glm::vec3>& points) {
   // Two passes for a good initial diameter, then grow just enough to take in
   // each outside point.
   const glm::vec3 a = points[farthestFrom(points, points[0])];
   const glm::vec3 b = points[farthestFrom(points, a)];
-  glm::dvec3 center = (glm::dvec3(a) + glm::dvec3(b)) * 0.5;
+  glm::dvec3 centre = (glm::dvec3(a) + glm::dvec3(b)) * 0.5;
   double radius = glm::length(glm::dvec3(b) - glm::dvec3(a)) * 0.5;
   for (const glm::vec3& p : points) {
-    const double distance = glm::length(glm::dvec3(p) - center);
+    const double distance = glm::length(glm::dvec3(p) - centre);
     if (distance > radius) {
       const double grown = (radius + distance) * 0.5;
-      center += (glm::dvec3(p) - center) * ((grown - radius) / distance);
+      centre += (glm::dvec3(p) - centre) * ((grown - radius) / distance);
       radius = grown;
     }
   }
-  return glm::vec3(center);
+  return glm::vec3(centre);
 }
 
 }  // namespace
@@ -99,9 +99,9 @@ BoundingSphere boundingSphereOf(const std::vector<glm::vec3>& points) {
   if (points.empty()) {
     throw std::invalid_argument("boundingSphereOf: no points");
   }
-  const glm::vec3 boxCenter = boundsOf(points).center();
-  const BoundingSphere aroundBox{boxCenter, enclosingRadius(points, boxCenter)};
-  const glm::vec3 ritter = ritterCenter(points);
+  const glm::vec3 boxCentre = boundsOf(points).centre();
+  const BoundingSphere aroundBox{boxCentre, enclosingRadius(points, boxCentre)};
+  const glm::vec3 ritter = ritterCentre(points);
   const BoundingSphere aroundRitter{ritter, enclosingRadius(points, ritter)};
   return aroundRitter.radius < aroundBox.radius ? aroundRitter : aroundBox;
 }

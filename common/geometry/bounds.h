@@ -2,6 +2,8 @@
 
 // Bounding volumes, e.g. to place a light outside a scene or to fit a shadow
 // volume's extrusion distance. Points are expected to be finite.
+//
+// Depends on: GLM (C++17).
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -16,7 +18,7 @@ struct Aabb {
   glm::vec3 max{-std::numeric_limits<float>::infinity()};
 
   bool empty() const;        // true until something was added
-  glm::vec3 center() const;  // (0,0,0) when empty
+  glm::vec3 centre() const;  // (0,0,0) when empty
   glm::vec3 extent() const;  // full size, max - min; (0,0,0) when empty
   void extend(glm::vec3 point);
 };
@@ -29,7 +31,7 @@ Aabb boundsOf(const std::vector<glm::vec3>& points);
 Aabb transformedBounds(const Aabb& box, const glm::mat4& matrix);
 
 struct BoundingSphere {
-  glm::vec3 center{0.0f};
+  glm::vec3 centre{0.0f};
   float radius = 0.0f;
 };
 

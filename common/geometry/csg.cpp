@@ -295,11 +295,7 @@ CsgImage rayCastCsg(const std::vector<CsgPrimitive>& primitives, const CsgTree& 
     if (!p.mesh) throw std::invalid_argument("rayCastCsg: a primitive without a mesh");
     scene.add(*p.mesh, p.model);
   }
-  const glm::mat4 inverse = glm::inverse(viewProjection);
-  const auto unproject = [&](glm::vec2 ndc, float z) {
-    const glm::vec4 p = inverse * glm::vec4(ndc, z, 1.0f);
-    return glm::vec3(p) / p.w;
-  };
+  const glm::dmat4 inverse = glm::inverse(glm::dmat4(viewProjection));
   CsgImage image;
   image.size = size;
   const std::size_t n = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y);
@@ -315,12 +311,8 @@ CsgImage rayCastCsg(const std::vector<CsgPrimitive>& primitives, const CsgTree& 
   std::vector<bool> in(primitives.size());
   for (int py = 0; py < size.y; ++py)
     for (int px = 0; px < size.x; ++px) {
-      const glm::vec2 ndc(2.0f * (static_cast<float>(px) + 0.5f) / static_cast<float>(size.x) - 1.0f,
-                          1.0f - 2.0f * (static_cast<float>(py) + 0.5f) / static_cast<float>(size.y));
-      // From the near plane (t = 0) through the middle of the depth range, which stays finite with
-      // a far plane at infinity.
-      const glm::vec3 origin = unproject(ndc, -1.0f);
-      const Ray ray{origin, unproject(ndc, 0.0f) - origin};
+      // From the near plane (t = 0) on; t grows with depth.
+      const Ray ray = cameraRay(inverse, size, px, py).ray;
       // The whole line: what it crosses before the near plane says which primitives hold the
       // near plane's point (a closed surface is crossed as often in as out along a line).
       events.clear();

@@ -103,7 +103,7 @@ ShadowVolume cutoutPrism(const Mesh& cutout, const EdgeAdjacency& adjacency) {
   validateMesh(cutout);
   const glm::vec4 fromAbove(0.0f, 1.0f, 0.0f, 0.0f);
   ShadowVolume prism;
-  for (const SilhouetteEdge& e : silhouetteEdges(adjacency, facesLight(cutout, fromAbove)))
+  for (const SilhouetteEdge& e : possibleSilhouetteEdges(adjacency, facesLight(cutout, fromAbove)))
     addExtrudedEdge(prism, cutout.positions[e.v0], cutout.positions[e.v1], fromAbove, 1.0f);
   return prism;
 }
@@ -206,7 +206,7 @@ std::vector<Segment> projectedSilhouette(const Mesh& mesh, const EdgeAdjacency& 
     return glm::vec3(q) / q.w;
   };
   std::vector<Segment> loops;
-  for (const SilhouetteEdge& e : silhouetteEdges(adjacency, facesLight(mesh, light)))
+  for (const SilhouetteEdge& e : possibleSilhouetteEdges(adjacency, facesLight(mesh, light)))
     loops.push_back({project(mesh.positions[e.v0]), project(mesh.positions[e.v1])});
   return loops;
 }

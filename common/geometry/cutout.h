@@ -61,7 +61,7 @@ glm::mat4 cutoutExtrusionMatrix(const glm::vec4& light, float reach);
 // (x, y, z, 0) at the far end, both with the position of the silhouette vertex. A vertex shader
 // blends two matrices with weights w and 1 - w: the model matrix keeps the near copy, and
 // extrusionToInfinity moves the far copy away from the light. Static for a cut-out: build it once
-// with the border edges (silhouetteEdges with any lit flags; a border is always silhouette).
+// with the border edges (possibleSilhouetteEdges with any lit flags; a border is always silhouette).
 std::vector<glm::vec4> doubledVertexVolume(const Mesh& mesh, const std::vector<SilhouetteEdge>& edges);
 
 // The matrix that sends every point (w = 1) to the point at infinity away from the light:

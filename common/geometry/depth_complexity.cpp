@@ -15,20 +15,12 @@ std::vector<std::uint32_t> depthComplexity(const std::vector<OracleObject>& obje
     if (o.sphere || !o.mesh) throw std::invalid_argument("depthComplexity: every object needs a mesh");
     scene.add(*o.mesh, o.model);
   }
-  const glm::mat4 inverse = glm::inverse(viewProjection);
-  const auto unproject = [&](glm::vec2 ndc, float z) {
-    const glm::vec4 p = inverse * glm::vec4(ndc, z, 1.0f);
-    return glm::vec3(p) / p.w;
-  };
+  const glm::dmat4 inverse = glm::inverse(glm::dmat4(viewProjection));
   std::vector<std::uint32_t> counts(static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y), 0);
   for (int py = 0; py < size.y; ++py)
     for (int px = 0; px < size.x; ++px) {
-      const glm::vec2 ndc(2.0f * (static_cast<float>(px) + 0.5f) / static_cast<float>(size.x) - 1.0f,
-                          1.0f - 2.0f * (static_cast<float>(py) + 0.5f) / static_cast<float>(size.y));
-      // From the near plane (ndc z = -1) through the middle of the depth range, which stays finite
-      // with a far plane at infinity; what lies past the far plane is dropped by its clip z.
-      const glm::vec3 origin = unproject(ndc, -1.0f);
-      const Ray ray{origin, unproject(ndc, 0.0f) - origin};
+      // From the near plane (t = 0) on; what lies past the far plane is dropped by its clip z.
+      const Ray ray = cameraRay(inverse, size, px, py).ray;
       std::uint32_t n = 0;
       for (const RayHit& hit : scene.allHits(ray)) {
         const glm::vec4 clip = viewProjection * glm::vec4(ray.origin + hit.t * ray.direction, 1.0f);

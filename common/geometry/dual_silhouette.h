@@ -15,7 +15,7 @@
 // Exact: the tree only prunes, with a margin above float rounding, and every edge it reaches is
 // decided by the facing test of SilhouetteCaster (shadow_volume.h), bit for bit the brute force's.
 // The edges come back in the adjacency's order and direction, the same list as
-// silhouetteEdges(const SilhouetteCaster&, light). Border edges (an open mesh) are on every
+// possibleSilhouetteEdges(const SilhouetteCaster&, light). Border edges (an open mesh) are on every
 // silhouette; edges next to a degenerate face (no plane) are tested on every query.
 #pragma once
 #include <cstdint>
@@ -33,7 +33,7 @@ class DualSilhouettes {
   explicit DualSilhouettes(const SilhouetteCaster& caster, std::size_t maxLeaf = 16, int maxDepth = 10);
 
   // The possible silhouette edges for a homogeneous light in the caster's space (w = 1 a point,
-  // w = 0 the direction towards a directional light), as silhouetteEdges(caster, light) gives them.
+  // w = 0 the direction towards a directional light), as possibleSilhouetteEdges(caster, light) gives them.
   // `out` is replaced. The tree is descended only when the light differs from the last one
   // descended for, bit for bit in all four coordinates: a light given in the caster's object space
   // changes exactly when the light or the caster moves, so a still pair costs a copy of the last

@@ -5,6 +5,11 @@
 #include <limits>
 
 namespace stencil {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;  // <cmath>'s name for it is POSIX, not C++
+
+}  // namespace
 
 std::vector<glm::vec4> doubledVertexArray(const Mesh& welded) {
   std::vector<glm::vec4> vertices;
@@ -93,7 +98,7 @@ float spanDegrees(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
   const auto angle = [](const glm::dvec3& p, const glm::dvec3& q) {
     return std::acos(std::clamp(glm::dot(p, q), -1.0, 1.0));
   };
-  double best = M_PI / 2;  // no cap smaller than a hemisphere: 180 degrees
+  double best = kPi / 2;  // no cap smaller than a hemisphere: 180 degrees
   // A cap whose diameter is one pair's arc, when it holds the third direction.
   for (int i = 0; i < 3; ++i) {
     const glm::dvec3 &p = u[i], &q = u[(i + 1) % 3], &r = u[(i + 2) % 3];
@@ -165,7 +170,7 @@ int closeAroundLight(DarkCap& cap, const Mesh& welded, const std::vector<std::ui
   for (std::size_t t = 0; t + 2 < cap.split.size(); t += 3)
     total +=
         solidAngle(light, glm::vec3(cap.split[t]), glm::vec3(cap.split[t + 1]), glm::vec3(cap.split[t + 2]));
-  const int spheres = static_cast<int>(std::lround(total / (4.0 * M_PI)));
+  const int spheres = static_cast<int>(std::lround(total / (4.0 * kPi)));
   // The octahedron of the six axis directions around the light, each face wound clockwise seen
   // from the light (facing away); turned round for spheres facing it.
   const glm::vec3 axis[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -178,15 +183,6 @@ int closeAroundLight(DarkCap& cap, const Mesh& welded, const std::vector<std::ui
       for (const glm::vec3& c : corner) cap.split.emplace_back(c, 0.0f);
     }
   return spheres;
-}
-
-bool sphereOutside(const std::vector<Plane>& planes, const glm::vec3& centre, float radius) {
-  for (const Plane& p : planes) {
-    const float length = glm::length(glm::vec3(p));
-    if (length == 0.0f) continue;
-    if ((glm::dot(glm::vec3(p), centre) + p.w) / length < -radius) return true;
-  }
-  return false;
 }
 
 std::array<glm::vec3, 4> nearRectangle(const glm::mat4& viewProjection) {
@@ -214,7 +210,7 @@ float side(const Plane& p, const glm::vec4& point) {
 
 }  // namespace
 
-std::vector<Plane> occlusionPyramid(const std::array<glm::vec3, 4>& r, const glm::vec4& light) {
+Frustum occlusionPyramid(const std::array<glm::vec3, 4>& r, const glm::vec4& light) {
   const glm::vec4 centre((r[0] + r[1] + r[2] + r[3]) * 0.25f, 1.0f);  // inside every side plane
   std::vector<Plane> planes;
   for (std::size_t i = 0; i < 4; ++i) {
@@ -236,19 +232,12 @@ std::vector<Plane> occlusionPyramid(const std::array<glm::vec3, 4>& r, const glm
                     [&](const glm::vec3& c) { return side(cap, glm::vec4(c, 1.0f)) > 0.0f; }))
       planes.push_back(cap);
   }
-  return planes;
+  return Frustum{planes};
 }
 
-std::vector<Plane> viewFrustumPlanes(const glm::mat4& m) {
-  const glm::vec4 row0(m[0][0], m[1][0], m[2][0], m[3][0]), row1(m[0][1], m[1][1], m[2][1], m[3][1]),
-      row2(m[0][2], m[1][2], m[2][2], m[3][2]), row3(m[0][3], m[1][3], m[2][3], m[3][3]);
-  return {row3 + row0, row3 - row0, row3 + row1, row3 - row1, row3 + row2};
-}
-
-int shadowCase(const std::vector<Plane>& pyramid, const std::vector<Plane>& frustum, const glm::vec3& centre,
-               float radius) {
-  if (sphereOutside(pyramid, centre, radius)) return 1;
-  if (sphereOutside(frustum, centre, radius)) return 2;
+int shadowCase(const Frustum& pyramid, const Frustum& frustum, const glm::vec3& centre, float radius) {
+  if (outside(pyramid, BoundingSphere{centre, radius})) return 1;
+  if (outside(frustum, BoundingSphere{centre, radius})) return 2;
   return 3;
 }
 
@@ -304,19 +293,18 @@ DepthBounds lightDepthBounds(const glm::vec3& centre, float radius, const glm::m
 BoundingSphere worldBounds(const BoundingSphere& local, const glm::mat4& model) {
   const float scale = std::max(
       {glm::length(glm::vec3(model[0])), glm::length(glm::vec3(model[1])), glm::length(glm::vec3(model[2]))});
-  return {glm::vec3(model * glm::vec4(local.center, 1.0f)), local.radius * scale};
+  return {glm::vec3(model * glm::vec4(local.centre, 1.0f)), local.radius * scale};
 }
 
 std::vector<VolumeChoice> chooseVolumes(ShadowMethod method, const std::vector<BoundingSphere>& casters,
-                                        const glm::vec3& lightCentre, float radius,
-                                        const std::vector<Plane>& pyramid,
-                                        const std::vector<Plane>& frustum) {
+                                        const glm::vec3& lightCentre, float radius, const Frustum& pyramid,
+                                        const Frustum& frustum) {
   std::vector<VolumeChoice> choices(casters.size());
   bool anyInPyramid = false;
   for (std::size_t c = 0; c < casters.size(); ++c) {
-    if (!std::isinf(radius) && culledByLight(lightCentre, radius, casters[c].center, casters[c].radius))
+    if (!std::isinf(radius) && culledByLight(lightCentre, radius, casters[c].centre, casters[c].radius))
       continue;
-    choices[c].shadowCase = shadowCase(pyramid, frustum, casters[c].center, casters[c].radius);
+    choices[c].shadowCase = shadowCase(pyramid, frustum, casters[c].centre, casters[c].radius);
     anyInPyramid |= choices[c].shadowCase != 1;
   }
   // Full z-fail (both caps of every volume) for Everitt-Kilgard, and for Lengyel once any caster
@@ -341,11 +329,11 @@ VolumeIndices casterVolume(const PreparedCaster& caster, const glm::vec4& light,
   const Mesh& mesh = caster.mesh;
   const std::vector<bool> lit = litFaces ? *litFaces : facesLight(mesh, light);
   // An open mesh (a scene file's) blocks light with both sides of its faces: two volumes.
-  const bool twoSided = !caster.report.closed();
+  const bool twoSided = !caster.report.closedManifold();
   const std::vector<SilhouetteEdge> edges = twoSided ? twoSidedSilhouetteEdges(caster.adjacency, lit)
                                             : silhouette && !litFaces
                                                 ? *silhouette
-                                                : silhouetteEdges(caster.adjacency, lit);
+                                                : possibleSilhouetteEdges(caster.adjacency, lit);
   const bool directional = light.w == 0.0f;
   const bool fullCaps = choice.fullCaps;
   std::vector<std::uint32_t>& indices = out.indices;

@@ -11,6 +11,8 @@
 //     180 degrees or more split;
 //   - the light's bounds: casters culled against them, and a scissor rectangle.
 // Lights are homogeneous as everywhere: w = 1 a point, w = 0 the direction towards the light.
+//
+// Depends on: GLM, mesh, adjacency, weld, shadow_volume, bounds, frustum (C++17).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -18,8 +20,8 @@
 #include <vector>
 
 #include "geometry/bounds.h"
+#include "geometry/frustum.h"
 #include "geometry/mesh.h"
-#include "geometry/scene.h"
 #include "geometry/shadow_volume.h"
 
 namespace stencil {
@@ -28,7 +30,7 @@ namespace stencil {
 // shader pushes to infinity away from the light (n = mesh.positions.size()).
 std::vector<glm::vec4> doubledVertexArray(const Mesh& welded);
 
-// The sides: each silhouette edge v0 -> v1 (as silhouetteEdges directs it) extruded into two
+// The sides: each silhouette edge v0 -> v1 (as possibleSilhouetteEdges directs it) extruded into two
 // triangles facing out of the volume, split as extrudedQuadCorners splits them so shared edges
 // cancel. For a directional light the two far copies are the same point at infinity, so each
 // edge is one triangle (v1, v0, far v0). Indices into doubledVertexArray of the same mesh.
@@ -38,7 +40,7 @@ std::vector<std::uint32_t> sideIndices(const Mesh& welded, const std::vector<Sil
 // An open mesh blocks the light with both sides of every face: the faces towards the light
 // close one volume, the faces away from it, turned round, another. An edge between the two
 // kinds is then a side of both volumes, walked the same way: its quad counts twice. These are
-// silhouetteEdges with every such interior edge twice (border edges once).
+// possibleSilhouetteEdges with every such interior edge twice (border edges once).
 std::vector<SilhouetteEdge> twoSidedSilhouetteEdges(const EdgeAdjacency& adjacency,
                                                     const std::vector<bool>& lit);
 
@@ -96,13 +98,6 @@ double solidAngle(const glm::vec3& eye, const glm::vec3& a, const glm::vec3& b, 
 int closeAroundLight(DarkCap& cap, const Mesh& welded, const std::vector<std::uint32_t>& lightCap,
                      const glm::vec3& light);
 
-// A plane n . p + d >= 0 inside; stored as (n, d).
-using Plane = glm::vec4;
-
-// True when the sphere lies entirely outside one of the planes (each plane's inside is its
-// positive side): a conservative "misses the convex region".
-bool sphereOutside(const std::vector<Plane>& planes, const glm::vec3& centre, float radius);
-
 // The camera's near rectangle in world space, corners counter-clockwise as seen by the camera,
 // from the inverse of viewProjection (GL clip conventions).
 std::array<glm::vec3, 4> nearRectangle(const glm::mat4& viewProjection);
@@ -111,11 +106,7 @@ std::array<glm::vec3, 4> nearRectangle(const glm::mat4& viewProjection);
 // Its apex is a point light; a directional light makes it a prism reaching from the near
 // rectangle towards the light. A shadow volume that enters the camera's near rectangle comes
 // from a caster inside it. Four sides, the near plane, and for a point light a plane through it.
-std::vector<Plane> occlusionPyramid(const std::array<glm::vec3, 4>& nearRect, const glm::vec4& light);
-
-// The view frustum's left, right, bottom, top and near planes, inward (no far plane: it may lie
-// at infinity), from viewProjection.
-std::vector<Plane> viewFrustumPlanes(const glm::mat4& viewProjection);
+Frustum occlusionPyramid(const std::array<glm::vec3, 4>& nearRect, const glm::vec4& light);
 
 // The paper's three cases for one caster (its world bounding sphere):
 //   1: it misses the occlusion pyramid, its volume cannot reach the near rectangle: z-pass,
@@ -123,8 +114,7 @@ std::vector<Plane> viewFrustumPlanes(const glm::mat4& viewProjection);
 //   2: it meets the pyramid but lies outside the view frustum: z-fail, sides and dark cap (the
 //      light cap would not land on the screen);
 //   3: it meets the pyramid and may be seen: z-fail, sides, dark cap and light cap.
-int shadowCase(const std::vector<Plane>& pyramid, const std::vector<Plane>& frustum, const glm::vec3& centre,
-               float radius);
+int shadowCase(const Frustum& pyramid, const Frustum& frustum, const glm::vec3& centre, float radius);
 
 // A caster whose bounds miss the light's bounding sphere shadows nothing the light reaches: the
 // way from any point inside the sphere to the light stays inside it.
@@ -174,8 +164,8 @@ struct VolumeChoice {
 // radius are the light's bounds (radius infinite: unbounded, nothing culled). Lengyel's choice
 // needs every caster's case first: one in the pyramid turns all of them to full z-fail.
 std::vector<VolumeChoice> chooseVolumes(ShadowMethod method, const std::vector<BoundingSphere>& casters,
-                                        const glm::vec3& lightCentre, float radius,
-                                        const std::vector<Plane>& pyramid, const std::vector<Plane>& frustum);
+                                        const glm::vec3& lightCentre, float radius, const Frustum& pyramid,
+                                        const Frustum& frustum);
 
 // What one caster draws for one light, as ranges of its index list (casterVolume).
 struct CasterVolume {
@@ -200,7 +190,7 @@ struct VolumeIndices {
 // caster's light cap, shadow_volume.h's litFacePieces), with a full-caps z-fail choice: its dark
 // cap is then the piece pushed away (pieceDarkCapIndices), O(piece) rather than O(caster).
 // silhouette: the possible silhouette edges for this light found beforehand (a SilhouetteCaster's
-// passes or DualSilhouettes' query, both the list silhouetteEdges(adjacency, lit) gives), used
+// passes or DualSilhouettes' query, both the list possibleSilhouetteEdges(adjacency, lit) gives), used
 // for a closed caster's whole volume in place of the brute force over its adjacency; an open
 // caster (two volumes) and a piece find their own.
 VolumeIndices casterVolume(const PreparedCaster& caster, const glm::vec4& light, const VolumeChoice& choice,

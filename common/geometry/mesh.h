@@ -3,6 +3,8 @@
 // Indexed triangle mesh plus the checks every lesson wants before it trusts
 // one. No OpenGL here: the arrays are laid out so they upload to GL buffers
 // as-is, but this layer must stay testable without a context.
+//
+// Depends on: GLM (C++17).
 
 #include <cstddef>
 #include <cstdint>

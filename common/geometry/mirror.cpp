@@ -15,36 +15,6 @@ glm::vec4 normalisedPlane(glm::vec4 p) {
 
 }  // namespace
 
-Frustum frustumOf(const glm::mat4& m, bool withFar) {
-  // GLM is column-major: row i of the matrix is (m[0][i], m[1][i], m[2][i], m[3][i]).
-  const auto row = [&](int i) { return glm::vec4(m[0][i], m[1][i], m[2][i], m[3][i]); };
-  const glm::vec4 w = row(3);
-  Frustum f{{w + row(0), w - row(0), w + row(1), w - row(1), w + row(2)}};
-  if (withFar) f.planes.push_back(w - row(2));
-  for (glm::vec4& p : f.planes) p = normalisedPlane(p);
-  return f;
-}
-
-glm::vec4 transformPlane(glm::vec4 plane, const glm::mat4& matrix) {
-  // Points map x -> M x, so planes map as row vectors p -> p M^-1.
-  return normalisedPlane(glm::transpose(glm::inverse(matrix)) * plane);
-}
-
-bool outside(const Frustum& f, const BoundingSphere& s) {
-  for (const glm::vec4& p : f.planes)
-    if (planeDistance(p, s.center) < -s.radius) return true;
-  return false;
-}
-
-bool outside(const Frustum& f, const std::vector<glm::vec3>& points) {
-  for (const glm::vec4& p : f.planes) {
-    bool allBehind = true;
-    for (const glm::vec3& x : points) allBehind = allBehind && planeDistance(p, x) < 0.0f;
-    if (allBehind) return true;
-  }
-  return false;
-}
-
 bool facesEye(glm::vec4 mirrorPlane, glm::vec3 eye) {
   return planeDistance(mirrorPlane, eye) > 0.0f;
 }

@@ -2,9 +2,9 @@
 // frustum of planes in the unreflected world, so a recursive mirror renderer can skip
 // objects and mirrors that no reflection shows. Pure functions on GLM types, usable alone.
 //
-// Conventions: a plane (a, b, c, d) with unit normal keeps the points with a x + b y + c z + d
-// >= 0 ("inside"); a frustum is the intersection of its planes' insides. Every test is
-// conservative: "outside" is answered only when one plane has everything strictly behind it.
+// Planes, frustums and the conservative "outside" tests are frustum.h's (the camera's frustum is
+// viewFrustum); here a mirror's plane has a unit normal pointing to its reflective side.
+// Depends on: GLM, planar, frustum, bounds (C++17).
 #pragma once
 #include <cstdint>
 #include <glm/mat4x4.hpp>
@@ -12,27 +12,9 @@
 #include <glm/vec4.hpp>
 #include <vector>
 
-#include "geometry/bounds.h"
+#include "geometry/frustum.h"
 
 namespace stencil {
-
-struct Frustum {
-  std::vector<glm::vec4> planes;  // inward-facing, unit normals
-};
-
-// The view frustum of a projection * view matrix (Gribb and Hartmann's row sums): left,
-// right, bottom, top, near and, when withFar, far. Without it the frustum reaches to
-// infinity, as deep reflections need.
-Frustum frustumOf(const glm::mat4& viewProjection, bool withFar = true);
-
-// The plane that the points of `plane` land on after an invertible affine `matrix`, with its
-// inside carried along: dot(result, M x) = dot(plane, x) up to a positive scale (renormalised).
-glm::vec4 transformPlane(glm::vec4 plane, const glm::mat4& matrix);
-
-// True when the sphere is certainly outside (wholly behind one plane).
-bool outside(const Frustum&, const BoundingSphere&);
-// True when every point is behind one and the same plane (a polygon or a box's corners).
-bool outside(const Frustum&, const std::vector<glm::vec3>& points);
 
 // Whether a one-sided mirror shows its reflective side to an eye: strictly in front of it.
 bool facesEye(glm::vec4 mirrorPlane, glm::vec3 eye);

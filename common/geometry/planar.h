@@ -1,6 +1,8 @@
 // Matrices that flatten or mirror the world through a plane (Kilgard, appendices A and B).
 // A plane is (a, b, c, d) with a*x + b*y + c*z + d = 0; its normal (a, b, c) points to the
 // side it faces. Pure functions on GLM types, usable alone.
+//
+// Depends on: GLM (C++17).
 #pragma once
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>

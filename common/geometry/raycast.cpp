@@ -328,4 +328,19 @@ LightRay rayTowardsLight(const glm::vec3& point, const glm::vec4& light) {
   return {{point, glm::vec3(light) / light.w - point}, 1.0f};
 }
 
+CameraRay cameraRay(const glm::dmat4& inverseViewProjection, glm::ivec2 size, int x, int yTop) {
+  const double ndcX = (x + 0.5) / size.x * 2.0 - 1.0;
+  const double ndcY = 1.0 - (yTop + 0.5) / size.y * 2.0;
+  const glm::dvec4 nearPoint = inverseViewProjection * glm::dvec4(ndcX, ndcY, -1.0, 1.0);
+  const glm::dvec4 farPoint = inverseViewProjection * glm::dvec4(ndcX, ndcY, 1.0, 1.0);
+  const glm::dvec3 a = glm::dvec3(nearPoint) / nearPoint.w;
+  if (std::abs(farPoint.w) > 1e-9 * std::abs(nearPoint.w)) {
+    const glm::dvec3 b = glm::dvec3(farPoint) / farPoint.w;
+    return {{glm::vec3(a), glm::vec3(b - a)}, 1.0f};
+  }
+  const glm::dvec4 middle = inverseViewProjection * glm::dvec4(ndcX, ndcY, 0.0, 1.0);
+  return {{glm::vec3(a), glm::vec3(glm::dvec3(middle) / middle.w - a)},
+          std::numeric_limits<float>::infinity()};
+}
+
 }  // namespace stencil

@@ -3,12 +3,15 @@
 // Exact CPU ray casting against triangle meshes, with no OpenGL: an oracle that
 // answers "what does this pixel see?" and "is this point in shadow?"
 // independently of the stencil passes it is used to check.
+//
+// Depends on: GLM, mesh (C++17).
 
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <optional>
@@ -90,6 +93,19 @@ class RayScene {
   };
   std::vector<Object> objects_;
 };
+
+// The camera's ray through the centre of pixel (x, yTop) of a size.x by size.y picture (yTop counts
+// rows from the top): the centre unprojected at the near and far planes through
+// inverseViewProjection (GL clip conventions, in double, then rounded to float), t in
+// [0, tMax = 1] spanning the view frustum. With the far plane at infinity the far point is a
+// direction (w = 0): the ray then goes through the centre unprojected half way in depth instead,
+// and on without end (tMax infinite). The oracle's, the CSG ray cast's and the depth-complexity
+// count's pixel rays.
+struct CameraRay {
+  Ray ray;
+  float tMax;
+};
+CameraRay cameraRay(const glm::dmat4& inverseViewProjection, glm::ivec2 size, int x, int yTop);
 
 // The ray from a point towards a homogeneous light (w = 1: a point light, w = 0: a direction
 // towards the light) and the t range that reaches it: (0, 1] for a point light, (0, inf) for a direction.

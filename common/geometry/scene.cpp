@@ -27,19 +27,6 @@ namespace stencil {
 
 namespace {
 
-// Zero area, exactly: a repeated vertex, or three vertices on one line. A sliver keeps its
-// place, however thin: dropping it would open the mesh.
-bool degenerate(const std::vector<glm::vec3>& positions, const std::uint32_t* triangle) {
-  const std::uint32_t a = triangle[0], b = triangle[1], c = triangle[2];
-  if (a == b || b == c || c == a) return true;
-  const glm::dvec3 pa(positions[a]), pb(positions[b]), pc(positions[c]);
-  return glm::cross(pb - pa, pc - pa) == glm::dvec3(0.0);
-}
-
-std::string plural(std::size_t n, const char* what) {
-  return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
-}
-
 // The text with every byte that is not printable ASCII written as \xNN: messages quote the
 // files, which may hold anything.
 std::string printable(std::string_view text) {
@@ -92,49 +79,6 @@ std::string readFile(const std::filesystem::path& path, std::uintmax_t maxBytes)
 
 SceneError::SceneError(const std::string& message) : std::runtime_error(printable(message)) {}
 
-PreparedCaster prepareCaster(const Mesh& mesh) {
-  validateMesh(mesh);
-  PreparedCaster result;
-  CasterReport& report = result.report;
-  report.inputVertices = mesh.positions.size();
-
-  Mesh positionsOnly;
-  positionsOnly.positions = mesh.positions;
-  positionsOnly.indices = mesh.indices;
-  Mesh welded = weldByPosition(positionsOnly).mesh;
-  report.weldedVertices = welded.positions.size();
-
-  result.mesh.positions = std::move(welded.positions);
-  for (std::size_t t = 0; t < welded.triangleCount(); ++t) {
-    if (degenerate(result.mesh.positions, &welded.indices[3 * t])) {
-      ++report.droppedDegenerate;
-      continue;
-    }
-    result.mesh.indices.insert(result.mesh.indices.end(), welded.indices.begin() + 3 * t,
-                               welded.indices.begin() + 3 * t + 3);
-  }
-  result.adjacency = buildEdgeAdjacency(result.mesh.indices, result.mesh.positions.size());
-  report.borderEdges = result.adjacency.report.borderEdges;
-  report.nonManifoldEdges = result.adjacency.report.nonManifoldEdges;
-  report.inconsistentEdges = result.adjacency.report.inconsistentEdges;
-
-  if (report.weldedVertices < report.inputVertices)
-    report.messages.push_back("welded " + std::to_string(report.inputVertices) + " vertices into " +
-                              std::to_string(report.weldedVertices) + " (vertices split at seams)");
-  if (report.droppedDegenerate > 0)
-    report.messages.push_back("dropped " + plural(report.droppedDegenerate, "degenerate triangle"));
-  if (report.borderEdges > 0)
-    report.messages.push_back("open: " + plural(report.borderEdges, "border edge") +
-                              " extrude as silhouette edges, and its faces cap the volume from both sides");
-  if (report.nonManifoldEdges > 0)
-    report.messages.push_back("not two-manifold: " + plural(report.nonManifoldEdges, "edge") +
-                              " shared by three or more faces");
-  if (report.inconsistentEdges > 0)
-    report.messages.push_back("inconsistently wound: " + plural(report.inconsistentEdges, "edge") +
-                              " walked the same way by both faces");
-  return result;
-}
-
 std::vector<OracleObject> oracleObjects(const Scene& scene, double time) {
   std::vector<OracleObject> objects;
   for (const SceneObject& o : scene.objects)
@@ -142,13 +86,13 @@ std::vector<OracleObject> oracleObjects(const Scene& scene, double time) {
   return objects;
 }
 
-SceneObject sceneObject(std::string name, Mesh mesh, const glm::mat4& model, const glm::vec3& color,
+SceneObject sceneObject(std::string name, Mesh mesh, const glm::mat4& model, const glm::vec3& colour,
                         bool casts) {
   SceneObject o;
   o.name = std::move(name);
   o.mesh = std::move(mesh);
   o.model = model;
-  o.color = color;
+  o.colour = colour;
   o.casts = casts;
   if (casts) o.caster = prepareCaster(o.mesh);
   return o;
@@ -484,7 +428,7 @@ class LineReader {
     if (glm::length(d) == 0.0f) fail("expected " + what + " to be a direction, got 0 0 0");
     return glm::normalize(d);
   }
-  glm::vec3 color() {
+  glm::vec3 colour() {
     const float r = number("the colour's R"), g = number("the colour's G"), b = number("the colour's B");
     const glm::vec3 c(r, g, b);
     if (glm::any(glm::lessThan(c, glm::vec3(0.0f)))) fail("expected a colour R G B of 0 or more each");
@@ -745,7 +689,7 @@ void readLight(LineReader& line, SceneLight& light, bool sunMayBeDown) {
     const std::string key = line.word("a light setting");
     if (!seen.insert(key).second) line.fail("light setting " + quote(key) + " given twice");
     if (key == "color")
-      light.color = line.color();
+      light.colour = line.colour();
     else if (key == "radius") {
       if (type != "point") line.fail("a directional light has no radius: its light reaches everywhere");
       light.radius = line.positive("the light's radius");
@@ -770,7 +714,7 @@ void readObjectLine(LineReader& line, SceneObject& object) {
       line.fail("expected a scale other than 0 (it flattens the object)");
     object.model = glm::scale(glm::mat4(1.0f), s) * object.model;
   } else if (key == "color")
-    object.color = line.color();
+    object.colour = line.colour();
   else if (key == "casts")
     object.casts = line.yesNo("whether it casts shadows");
   else if (key == "receives")
@@ -822,7 +766,7 @@ void checkCsg(Scene& scene, const std::string& file, std::size_t column) {
     if (!named[i]) continue;
     const SceneObject& o = scene.objects[i];
     CasterReport report = o.casts ? o.caster.report : prepareCaster(o.mesh).report;
-    if (!report.closed())
+    if (!report.closedManifold())
       throw SceneError(where + "csg: object '" + o.name + "' is not a closed solid (" +
                        std::to_string(report.borderEdges) + " border edges, " +
                        std::to_string(report.nonManifoldEdges) + " non-manifold, " +
@@ -866,7 +810,7 @@ Scene parseScene(std::string_view text, const std::filesystem::path& file, const
     } else if (keyword == "ambient") {
       if (haveAmbient) line.fail("a second ambient line");
       haveAmbient = true;
-      scene.ambient = line.color();
+      scene.ambient = line.colour();
       line.end();
     } else if (keyword == "light") {
       if (scene.lights.size() == kMaxSceneLights)
@@ -957,7 +901,7 @@ SolidsSeen solidsSeenFrom(const Scene& scene, const std::vector<glm::mat4>& mode
   seen.room.assign(scene.objects.size(), false);
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
-    if (!o.casts || !o.caster.report.closed()) continue;
+    if (!o.casts || !o.caster.report.closedManifold()) continue;
     const Mesh& mesh = o.caster.mesh;
     const bool facesIn = signedVolume(mesh) < 0.0;
     const glm::mat4 toObject = glm::inverse(models[i]);
@@ -998,7 +942,7 @@ bool lightBuried(const Scene& scene, const std::vector<glm::mat4>& models, const
                  const glm::vec4& light) {
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
-    if (!o.casts || !o.caster.report.closed()) continue;
+    if (!o.casts || !o.caster.report.closedManifold()) continue;
     const Mesh& mesh = o.caster.mesh;
     if (lightBuried(mesh, {signedVolume(mesh) < 0.0, seen.room[i]}, glm::inverse(models[i]) * light))
       return true;

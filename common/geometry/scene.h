@@ -3,7 +3,8 @@
 // render any scene described this way (--scene FILE), so a user can try the shadow-volume
 // system on a model of their own, and each hard case is a small file.
 //
-// Casters are prepared for shadow volumes when the scene is read (prepareCaster): seams
+// Casters are prepared for shadow volumes when the scene is read (shadow_volume.h's
+// prepareCaster): seams
 // welded, degenerate triangles dropped, and what the mesh breaks of the requirements (closed,
 // two-manifold, consistently wound) reported in words.
 #pragma once
@@ -21,6 +22,7 @@
 #include "geometry/adjacency.h"
 #include "geometry/mesh.h"
 #include "geometry/shadow_oracle.h"
+#include "geometry/shadow_volume.h"
 #include "geometry/solar.h"
 
 namespace stencil {
@@ -42,31 +44,6 @@ inline constexpr std::size_t kMaxObjFaceCorners = 256;     // corners of one OBJ
 inline constexpr float kMaxObjCoordinate = 1e6f;           // |x|, |y|, |z| of an OBJ vertex
 inline constexpr std::size_t kMaxSceneCsgProducts = 4096;  // the csg expression's sum of products
 
-// What preparing a caster found and did. Open meshes are kept: their border edges extrude as
-// silhouette edges (shadow_volume.h), and their faces cap the volume from both sides.
-struct CasterReport {
-  std::size_t inputVertices = 0, weldedVertices = 0;
-  std::size_t droppedDegenerate = 0;  // triangles with a repeated vertex or zero area, removed
-  std::size_t borderEdges = 0;        // open mesh
-  std::size_t nonManifoldEdges = 0;   // three or more faces: refused
-  std::size_t inconsistentEdges = 0;  // two faces walking the edge the same way: refused
-  bool closed() const { return borderEdges == 0 && usable(); }
-  bool usable() const { return nonManifoldEdges == 0 && inconsistentEdges == 0; }
-  std::vector<std::string> messages;  // one line each, for the user
-};
-
-// A caster made fit for shadow volumes: welded positions (no normals), degenerate triangles
-// dropped, and its edges' faces.
-struct PreparedCaster {
-  Mesh mesh;
-  EdgeAdjacency adjacency;
-  CasterReport report;
-};
-// Prepares a mesh (its normals are ignored) as a caster: welds it by position, drops its
-// degenerate triangles and builds its edges' faces; the report says what was done and found.
-// Throws std::invalid_argument for an invalid mesh or a position that is not finite.
-PreparedCaster prepareCaster(const Mesh& mesh);
-
 // A sun light's place and clock (`light sun` in a scene file): its position is the direction
 // towards the sun then (solar.h; world +y up, -z north, +x east), at w = 0.
 struct SunLight {
@@ -76,7 +53,7 @@ struct SunLight {
 
 struct SceneLight {
   glm::vec4 position{0.0f, 5.0f, 0.0f, 1.0f};  // w = 1 a point (world), w = 0 the direction towards the light
-  glm::vec3 color{1.0f};
+  glm::vec3 colour{1.0f};
   // A point light's bounds: its light falls to zero at this distance (attenuation), so nothing
   // outside the sphere needs its shadow. Infinite for a light without bounds.
   float radius = std::numeric_limits<float>::infinity();
@@ -88,7 +65,7 @@ struct SceneObject {
   int line = 0;  // its object line in the scene file; 0 when built in code
   Mesh mesh;     // object space, with normals, as drawn
   glm::mat4 model{1.0f};
-  glm::vec3 color{0.8f};
+  glm::vec3 colour{0.8f};
   bool casts = true, receives = true;
   // Motion: at time t the model matrix is model * rotate(spinDegPerSecond * t, spinAxis) — about
   // the object's own origin — followed by a translation of bob * sin(t) along y.
@@ -100,7 +77,7 @@ struct SceneObject {
 };
 
 // An object for a scene built in code, its caster prepared as a file's would be.
-SceneObject sceneObject(std::string name, Mesh mesh, const glm::mat4& model, const glm::vec3& color,
+SceneObject sceneObject(std::string name, Mesh mesh, const glm::mat4& model, const glm::vec3& colour,
                         bool casts = true);
 
 struct SceneCamera {

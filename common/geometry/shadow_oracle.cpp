@@ -15,29 +15,6 @@ namespace {
 // arrives at zero incidence, so lit and shadowed look the same and neither is claimed.
 constexpr float kEdgeOn = 1e-5f;
 
-// The camera ray through a pixel centre: the centre unprojected at the near and far planes,
-// t in [0, tMax = 1] spanning the view frustum. With the far plane at infinity the far point is
-// a direction (w = 0): the ray then goes through the centre unprojected half way in depth
-// instead, and on without end.
-struct CameraRay {
-  Ray ray;
-  float tMax;
-};
-CameraRay cameraRay(const glm::dmat4& inverseViewProjection, glm::ivec2 size, int x, int yTop) {
-  const double ndcX = (x + 0.5) / size.x * 2.0 - 1.0;
-  const double ndcY = 1.0 - (yTop + 0.5) / size.y * 2.0;
-  const glm::dvec4 nearPoint = inverseViewProjection * glm::dvec4(ndcX, ndcY, -1.0, 1.0);
-  const glm::dvec4 farPoint = inverseViewProjection * glm::dvec4(ndcX, ndcY, 1.0, 1.0);
-  const glm::dvec3 a = glm::dvec3(nearPoint) / nearPoint.w;
-  if (std::abs(farPoint.w) > 1e-9 * std::abs(nearPoint.w)) {
-    const glm::dvec3 b = glm::dvec3(farPoint) / farPoint.w;
-    return {{glm::vec3(a), glm::vec3(b - a)}, 1.0f};
-  }
-  const glm::dvec4 middle = inverseViewProjection * glm::dvec4(ndcX, ndcY, 0.0, 1.0);
-  return {{glm::vec3(a), glm::vec3(glm::dvec3(middle) / middle.w - a)},
-          std::numeric_limits<float>::infinity()};
-}
-
 // How far along the surface's normal a shadow ray starts so that it cannot meet the surface it
 // starts on. The hit point carries the rounding of origin + t * direction in each coordinate, a
 // few float ulps of the larger of the two (1e-6 is about 8 ulps); only the part along the normal

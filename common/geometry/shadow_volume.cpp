@@ -1,7 +1,6 @@
 #include "geometry/shadow_volume.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
@@ -34,6 +33,31 @@ glm::vec3 faceNormal(const Mesh& mesh, std::size_t triangle) {
   return glm::cross(b - a, c - a);
 }
 
+// The index of the lowest set bit of a non-zero mask: C++20's std::countr_zero, one instruction
+// on GCC and Clang.
+int lowestSetBit(std::uint32_t mask) {
+#if defined(__GNUC__)
+  return __builtin_ctz(mask);
+#else
+  int bit = 0;
+  for (; (mask & 1u) == 0; mask >>= 1) ++bit;
+  return bit;
+#endif
+}
+
+// Zero area, exactly: a repeated vertex, or three vertices on one line. A sliver keeps its
+// place, however thin: dropping it would open the mesh.
+bool degenerate(const std::vector<glm::vec3>& positions, const std::uint32_t* triangle) {
+  const std::uint32_t a = triangle[0], b = triangle[1], c = triangle[2];
+  if (a == b || b == c || c == a) return true;
+  const glm::dvec3 pa(positions[a]), pb(positions[b]), pc(positions[c]);
+  return glm::cross(pb - pa, pc - pa) == glm::dvec3(0.0);
+}
+
+std::string plural(std::size_t n, const char* what) {
+  return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+}
+
 // > 0: the triangle faces the light; 0: edge-on or degenerate.
 float facing(const Mesh& mesh, std::size_t triangle, const glm::vec4& light) {
   const glm::vec3& a = mesh.positions[mesh.indices[3 * triangle]];
@@ -49,7 +73,8 @@ std::vector<bool> facesLight(const Mesh& mesh, const glm::vec4& light) {
   return lit;
 }
 
-std::vector<SilhouetteEdge> silhouetteEdges(const EdgeAdjacency& adjacency, const std::vector<bool>& lit) {
+std::vector<SilhouetteEdge> possibleSilhouetteEdges(const EdgeAdjacency& adjacency,
+                                                    const std::vector<bool>& lit) {
   std::vector<SilhouetteEdge> silhouette;
   for (const Edge& e : adjacency.edges) {
     const bool lit0 = lit.at(static_cast<std::size_t>(e.face0));
@@ -140,10 +165,10 @@ inline std::uint32_t differingEdges32(const std::uint8_t* flag, const Silhouette
 
 }  // namespace
 
-void silhouetteEdges(const SilhouetteCaster& c, const std::vector<std::uint8_t>& lit,
-                     std::vector<SilhouetteEdge>& out) {
+void possibleSilhouetteEdges(const SilhouetteCaster& c, const std::vector<std::uint8_t>& lit,
+                             std::vector<SilhouetteEdge>& out) {
   if (lit.size() != c.faceCount() + 1)
-    throw std::invalid_argument("silhouetteEdges: " + std::to_string(lit.size()) + " flags for " +
+    throw std::invalid_argument("possibleSilhouetteEdges: " + std::to_string(lit.size()) + " flags for " +
                                 std::to_string(c.faceCount()) + " faces and the border's");
   out.clear();
   const std::uint8_t* flag = lit.data();
@@ -161,17 +186,17 @@ void silhouetteEdges(const SilhouetteCaster& c, const std::vector<std::uint8_t>&
   std::size_t e = 0;
   for (; e + 32 <= edges; e += 32)
     for (std::uint32_t mask = differingEdges32(flag, faces + e); mask != 0; mask &= mask - 1)
-      emit(e + static_cast<std::size_t>(std::countr_zero(mask)));
+      emit(e + static_cast<std::size_t>(lowestSetBit(mask)));
   for (; e < edges; ++e)
     if (flag[static_cast<std::uint32_t>(faces[e].face0)] != flag[static_cast<std::uint32_t>(faces[e].face1)])
       emit(e);
 }
 
-std::vector<SilhouetteEdge> silhouetteEdges(const SilhouetteCaster& caster, const glm::vec4& light) {
+std::vector<SilhouetteEdge> possibleSilhouetteEdges(const SilhouetteCaster& caster, const glm::vec4& light) {
   std::vector<std::uint8_t> lit;
   std::vector<SilhouetteEdge> out;
   facesLight(caster, light, lit);
-  silhouetteEdges(caster, lit, out);
+  possibleSilhouetteEdges(caster, lit, out);
   return out;
 }
 
@@ -198,17 +223,56 @@ ShadowVolume silhouetteVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, 
                                 " inconsistently wound edges; its silhouette is not a volume's boundary");
   }
   ShadowVolume volume;
-  for (const SilhouetteEdge& e : silhouetteEdges(adjacency, facesLight(mesh, light)))
+  for (const SilhouetteEdge& e : possibleSilhouetteEdges(adjacency, facesLight(mesh, light)))
     addExtrudedEdge(volume, mesh.positions[e.v0], mesh.positions[e.v1], light, distance);
   return volume;
 }
 
-CasterEdges::CasterEdges(const Mesh& mesh)
-    : welded(weldByPosition(mesh).mesh),
-      adjacency(buildEdgeAdjacency(welded.indices, welded.positions.size())) {}
+PreparedCaster prepareCaster(const Mesh& mesh) {
+  validateMesh(mesh);
+  PreparedCaster result;
+  CasterReport& report = result.report;
+  report.inputVertices = mesh.positions.size();
 
-ShadowVolume silhouetteVolume(const CasterEdges& caster, const glm::vec4& light, float distance) {
-  return silhouetteVolume(caster.welded, caster.adjacency, light, distance);
+  Mesh positionsOnly;
+  positionsOnly.positions = mesh.positions;
+  positionsOnly.indices = mesh.indices;
+  Mesh welded = weldByPosition(positionsOnly).mesh;
+  report.weldedVertices = welded.positions.size();
+
+  result.mesh.positions = std::move(welded.positions);
+  for (std::size_t t = 0; t < welded.triangleCount(); ++t) {
+    if (degenerate(result.mesh.positions, &welded.indices[3 * t])) {
+      ++report.droppedDegenerate;
+      continue;
+    }
+    result.mesh.indices.insert(result.mesh.indices.end(), welded.indices.begin() + 3 * t,
+                               welded.indices.begin() + 3 * t + 3);
+  }
+  result.adjacency = buildEdgeAdjacency(result.mesh.indices, result.mesh.positions.size());
+  report.borderEdges = result.adjacency.report.borderEdges;
+  report.nonManifoldEdges = result.adjacency.report.nonManifoldEdges;
+  report.inconsistentEdges = result.adjacency.report.inconsistentEdges;
+
+  if (report.weldedVertices < report.inputVertices)
+    report.messages.push_back("welded " + std::to_string(report.inputVertices) + " vertices into " +
+                              std::to_string(report.weldedVertices) + " (vertices split at seams)");
+  if (report.droppedDegenerate > 0)
+    report.messages.push_back("dropped " + plural(report.droppedDegenerate, "degenerate triangle"));
+  if (report.borderEdges > 0)
+    report.messages.push_back("open: " + plural(report.borderEdges, "border edge") +
+                              " extrude as silhouette edges, and its faces cap the volume from both sides");
+  if (report.nonManifoldEdges > 0)
+    report.messages.push_back("not two-manifold: " + plural(report.nonManifoldEdges, "edge") +
+                              " shared by three or more faces");
+  if (report.inconsistentEdges > 0)
+    report.messages.push_back("inconsistently wound: " + plural(report.inconsistentEdges, "edge") +
+                              " walked the same way by both faces");
+  return result;
+}
+
+ShadowVolume silhouetteVolume(const PreparedCaster& caster, const glm::vec4& light, float distance) {
+  return silhouetteVolume(caster.mesh, caster.adjacency, light, distance);
 }
 
 ShadowVolume polygonVolumes(const Mesh& mesh, const glm::vec4& light, float distance, bool twoSided) {
@@ -243,8 +307,8 @@ ClosedVolume closedVolumeOf(const Mesh& mesh, const EdgeAdjacency& adjacency, co
                                 std::to_string(mesh.indices.size() / 3) + " triangles");
   ClosedVolume closed;
   ShadowVolume& v = closed.triangles;
-  const std::vector<SilhouetteEdge> silhouette = silhouetteEdges(adjacency, lit);
-  closed.silhouetteEdges = silhouette.size();
+  const std::vector<SilhouetteEdge> silhouette = possibleSilhouetteEdges(adjacency, lit);
+  closed.possibleSilhouetteEdges = silhouette.size();
   for (const SilhouetteEdge& e : silhouette)
     addExtrudedEdge(v, mesh.positions[e.v0], mesh.positions[e.v1], light, distance);
   closed.sideTriangles = v.triangleCount();
@@ -324,10 +388,11 @@ bool isConvex(const Mesh& mesh, const EdgeAdjacency& adjacency, bool facesIn) {
   return pieces == 1;
 }
 
-std::size_t nestingBound(std::size_t litFaces, std::size_t silhouetteEdges, bool convex, bool lightOutside) {
+std::size_t nestingBound(std::size_t litFaces, std::size_t possibleSilhouetteEdges, bool convex,
+                         bool lightOutside) {
   if (litFaces == 0) return 0;
   if (convex) return 1;
-  return lightOutside ? std::min(litFaces, silhouetteEdges / 2) : litFaces;
+  return lightOutside ? std::min(litFaces, possibleSilhouetteEdges / 2) : litFaces;
 }
 
 std::vector<std::vector<bool>> litFacePieces(const std::vector<bool>& lit, std::size_t maxFaces) {

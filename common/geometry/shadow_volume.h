@@ -5,12 +5,15 @@
 //
 // A light is homogeneous, as in planar.h: w = 1 a point light, w = 0 the direction towards a
 // directional light. Give it in the mesh's space (inverse model matrix times the world light).
+//
+// Depends on: GLM, mesh, adjacency, weld (C++17).
 #pragma once
 #include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "geometry/adjacency.h"
@@ -21,10 +24,11 @@ namespace stencil {
 // How far the edges are pushed away from the light. A finite distance is Kilgard's
 // extendVolume: the volume ends there, and a receiver beyond it is not shadowed. Infinity puts
 // the far vertices at w = 0, the point at infinity away from the light: the volume never
-// ends, and a far clipping plane cuts only the part that lies beyond everything drawn.
-constexpr float kToInfinity = std::numeric_limits<float>::infinity();
+// ends, and a far clipping plane cuts only the part that lies beyond everything drawn. The same
+// value is the lessons' infinite far plane and a light without bounds.
+inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
-// Where `point` goes when pushed `distance` away from the light (kToInfinity: w = 0).
+// Where `point` goes when pushed `distance` away from the light (kInfinity: w = 0).
 glm::vec4 extrudeAway(const glm::vec3& point, const glm::vec4& light, float distance);
 
 // One flag per triangle: does it face the light? Strictly: a face edge-on to the light (or a
@@ -41,12 +45,13 @@ struct SilhouetteEdge {
 // an open mesh (an outline and the holes of a planar cut-out), whichever way their one face
 // faces. Needs adjacency of welded vertices (adjacency.h); non-manifold edges give no
 // meaningful silhouette, check the adjacency report first.
-std::vector<SilhouetteEdge> silhouetteEdges(const EdgeAdjacency& adjacency, const std::vector<bool>& lit);
+std::vector<SilhouetteEdge> possibleSilhouetteEdges(const EdgeAdjacency& adjacency,
+                                                    const std::vector<bool>& lit);
 
 // ---- silhouettes at memory speed --------------------------------------------------------------
 //
 // facesLight gathers three indices and three positions per triangle and recomputes its normal on
-// every call; silhouetteEdges reads 16-byte edges and two bit flags through bounds checks. A caster
+// every call; possibleSilhouetteEdges reads 16-byte edges and two bit flags through bounds checks. A caster
 // that is drawn from many lights or frames does the arithmetic that depends only on the mesh once:
 // SilhouetteCaster keeps each face's normal and first corner (the facing test's inputs) in
 // structure-of-arrays order, and each edge's two faces apart from its two vertices. The facing pass
@@ -54,7 +59,7 @@ std::vector<SilhouetteEdge> silhouetteEdges(const EdgeAdjacency& adjacency, cons
 // names, and an edge's vertices are read only when it is a possible silhouette edge.
 
 // A caster's facing test and edges, prepared once. Built from a mesh and its adjacency (welded
-// vertices, as silhouetteEdges needs). The normal is cross(b - a, c - a) and the test
+// vertices, as possibleSilhouetteEdges needs). The normal is cross(b - a, c - a) and the test
 // dot(normal, L.xyz - L.w * a) > 0, the same float operations in the same order as facesLight,
 // so the flags, and the edges, are bit for bit the ones the Mesh overloads give.
 struct SilhouetteCaster {
@@ -78,13 +83,13 @@ SilhouetteCaster prepareSilhouettes(const Mesh& mesh, const EdgeAdjacency& adjac
 void facesLight(const SilhouetteCaster& caster, const glm::vec4& light, std::vector<std::uint8_t>& lit);
 
 // The edge pass: the possible silhouette edges for flags from the facing pass above, appended to
-// `out` after clearing it, in the order and direction silhouetteEdges(adjacency, lit) gives.
+// `out` after clearing it, in the order and direction possibleSilhouetteEdges(adjacency, lit) gives.
 // Throws std::invalid_argument when lit does not have faceCount() + 1 entries.
-void silhouetteEdges(const SilhouetteCaster& caster, const std::vector<std::uint8_t>& lit,
-                     std::vector<SilhouetteEdge>& out);
+void possibleSilhouetteEdges(const SilhouetteCaster& caster, const std::vector<std::uint8_t>& lit,
+                             std::vector<SilhouetteEdge>& out);
 
-// Both passes, for one light: the same edges as silhouetteEdges(adjacency, facesLight(mesh, light)).
-std::vector<SilhouetteEdge> silhouetteEdges(const SilhouetteCaster& caster, const glm::vec4& light);
+// Both passes, for one light: the same edges as possibleSilhouetteEdges(adjacency, facesLight(mesh, light)).
+std::vector<SilhouetteEdge> possibleSilhouetteEdges(const SilhouetteCaster& caster, const glm::vec4& light);
 
 // Homogeneous triangles, three vertices each, counter-clockwise seen from outside the volume.
 struct ShadowVolume {
@@ -102,13 +107,35 @@ std::array<int, 6> extrudedQuadCorners(const glm::vec3& a, const glm::vec3& b);
 void addExtrudedEdge(ShadowVolume& volume, const glm::vec3& a, const glm::vec3& b, const glm::vec4& light,
                      float distance);
 
-// What silhouetteVolume needs of a caster, built once: a welded copy (shapes split vertices
-// at creases to carry normals; the silhouette needs them joined) and its edges' faces.
-struct CasterEdges {
-  Mesh welded;
-  EdgeAdjacency adjacency;
-  explicit CasterEdges(const Mesh& mesh);
+// ---- a caster, prepared once -------------------------------------------------------------------
+
+// What preparing a caster found and did. Open meshes are kept: their border edges extrude as
+// possible silhouette edges, and their faces cap the volume from both sides.
+struct CasterReport {
+  std::size_t inputVertices = 0, weldedVertices = 0;
+  std::size_t droppedDegenerate = 0;  // triangles with a repeated vertex or zero area, removed
+  std::size_t borderEdges = 0;        // open mesh
+  std::size_t nonManifoldEdges = 0;   // three or more faces: refused
+  std::size_t inconsistentEdges = 0;  // two faces walking the edge the same way: refused
+  // Closed, two-manifold and consistently wound: what z-fail's closed volumes need (as
+  // AdjacencyReport::closedManifold).
+  bool closedManifold() const { return borderEdges == 0 && usable(); }
+  bool usable() const { return nonManifoldEdges == 0 && inconsistentEdges == 0; }
+  std::vector<std::string> messages;  // one line each, for the user
 };
+
+// A caster made fit for shadow volumes, built once and used for every light: welded positions (no
+// normals: shapes split vertices at creases to carry normals, the silhouette needs them joined),
+// degenerate triangles dropped, and its edges' faces.
+struct PreparedCaster {
+  Mesh mesh;
+  EdgeAdjacency adjacency;
+  CasterReport report;
+};
+// Prepares a mesh (its normals are ignored) as a caster: welds it by position (weld.h), drops its
+// degenerate triangles and builds its edges' faces; the report says what was done and found.
+// Throws std::invalid_argument for an invalid mesh or a position that is not finite.
+PreparedCaster prepareCaster(const Mesh& mesh);
 
 // The sides of the volume of a whole caster: every silhouette edge extruded. Its boundary is
 // the union's, which is what the invert-bit method needs; the caster's own lit faces close it
@@ -116,7 +143,7 @@ struct CasterEdges {
 // inconsistently wound edges.
 ShadowVolume silhouetteVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, const glm::vec4& light,
                               float distance);
-ShadowVolume silhouetteVolume(const CasterEdges& caster, const glm::vec4& light, float distance);
+ShadowVolume silhouetteVolume(const PreparedCaster& caster, const glm::vec4& light, float distance);
 
 // Kilgard's extendVolume for every triangle that faces the light: its three edges extruded, one
 // volume per triangle. No adjacency needed and any triangle soup works, but the volumes
@@ -135,7 +162,7 @@ ShadowVolume polygonVolumes(const Mesh& mesh, const glm::vec4& light, float dist
 // consistently wound (adjacency.h's report): an open volume would leave the count off.
 struct ClosedVolume {
   ShadowVolume triangles;  // the sides, then the light cap, then the dark cap
-  std::size_t silhouetteEdges = 0;
+  std::size_t possibleSilhouetteEdges = 0;
   std::size_t sideTriangles = 0, lightCapTriangles = 0, darkCapTriangles = 0;
 };
 ClosedVolume closedVolume(const Mesh& mesh, const EdgeAdjacency& adjacency, const glm::vec4& light,
@@ -173,7 +200,8 @@ bool isConvex(const Mesh& mesh, const EdgeAdjacency& adjacency, bool facesIn = f
 // half: seen from the light, a great circle of directions (a line, for a directional light)
 // through any direction leaves the caster's outline, crosses each silhouette edge's image at most
 // once, and the number of lit faces behind it changes by one at each crossing, from 0 back to 0.
-std::size_t nestingBound(std::size_t litFaces, std::size_t silhouetteEdges, bool convex, bool lightOutside);
+std::size_t nestingBound(std::size_t litFaces, std::size_t possibleSilhouetteEdges, bool convex,
+                         bool lightOutside);
 
 // The faces that face the light in pieces of at most maxFaces each, in index order (one flag
 // per triangle per piece): a caster whose count could pass a group's range is counted piece by

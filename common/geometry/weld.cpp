@@ -1,8 +1,8 @@
 #include "geometry/weld.h"
 
-#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <glm/geometric.hpp>
 #include <limits>
 #include <stdexcept>
@@ -25,12 +25,15 @@ std::uint64_t mix(std::uint64_t h) {
 
 struct ExactKey {
   std::uint32_t x, y, z;
-  bool operator==(const ExactKey&) const = default;
+  bool operator==(const ExactKey& o) const { return x == o.x && y == o.y && z == o.z; }
 };
 
 std::uint32_t canonicalBits(float value) {
   // -0.0 == +0.0 but their bits differ; hash them alike.
-  return std::bit_cast<std::uint32_t>(value == 0.0f ? 0.0f : value);
+  const float canonical = value == 0.0f ? 0.0f : value;
+  std::uint32_t bits;
+  std::memcpy(&bits, &canonical, sizeof bits);
+  return bits;
 }
 
 struct ExactKeyHash {
@@ -42,7 +45,7 @@ struct ExactKeyHash {
 
 struct CellKey {
   std::int64_t x, y, z;
-  bool operator==(const CellKey&) const = default;
+  bool operator==(const CellKey& o) const { return x == o.x && y == o.y && z == o.z; }
 };
 
 struct CellKeyHash {

@@ -4,6 +4,8 @@
 // (edge adjacency, closedness, silhouettes) can be read off the index buffer.
 // Shapes duplicate vertices at creases to carry several normals; welding is
 // how shadow-volume code gets the connected surface back.
+//
+// Depends on: GLM, mesh (C++17).
 
 #include <cstdint>
 #include <vector>

@@ -28,9 +28,9 @@ void markRed(Image& picture, int x, int y) {
   o[0] = 255, o[1] = 0, o[2] = 0;
 }
 
-}  // namespace
-
-ImageDiff diffColour(const Image& actual, const Image& expected, int maxChannelDiff) {
+// Compares the first `channels` channels of each pixel: a pixel differs when one of them is off by
+// more than `allowed`; each differing pixel is marked red on a dimmed copy of `actual`.
+ImageDiff diffImages(const Image& actual, const Image& expected, int channels, int allowed) {
   ImageDiff d;
   if (actual.width != expected.width || actual.height != expected.height) {
     d.sizeMismatch = true;
@@ -41,10 +41,10 @@ ImageDiff diffColour(const Image& actual, const Image& expected, int maxChannelD
   for (int y = 0; y < actual.height; ++y)
     for (int x = 0; x < actual.width; ++x) {
       int worst = 0;
-      for (int c = 0; c < 4; ++c)
+      for (int c = 0; c < channels; ++c)
         worst = std::max(worst, std::abs(actual.at(x, y)[c] - expected.at(x, y)[c]));
       d.maxChannelDiff = std::max(d.maxChannelDiff, worst);
-      if (worst > maxChannelDiff) {
+      if (worst > allowed) {
         ++d.differing;
         markRed(d.picture, x, y);
       }
@@ -52,24 +52,14 @@ ImageDiff diffColour(const Image& actual, const Image& expected, int maxChannelD
   return d;
 }
 
+}  // namespace
+
+ImageDiff diffColour(const Image& actual, const Image& expected, int maxChannelDiff) {
+  return diffImages(actual, expected, 4, maxChannelDiff);
+}
+
 ImageDiff diffStencil(const Image& actual, const Image& expected) {
-  ImageDiff d;
-  if (actual.width != expected.width || actual.height != expected.height) {
-    d.sizeMismatch = true;
-    return d;
-  }
-  d.picture = dimmed(actual);
-  d.pixels = static_cast<std::uint64_t>(actual.width) * actual.height;
-  for (int y = 0; y < actual.height; ++y)
-    for (int x = 0; x < actual.width; ++x) {
-      const int diff = std::abs(*actual.at(x, y) - *expected.at(x, y));
-      d.maxChannelDiff = std::max(d.maxChannelDiff, diff);
-      if (diff) {
-        ++d.differing;
-        markRed(d.picture, x, y);
-      }
-    }
-  return d;
+  return diffImages(actual, expected, 1, 0);
 }
 
 std::filesystem::path goldenColourPath(const std::filesystem::path& dir, const std::string& name) {

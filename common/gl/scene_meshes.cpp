@@ -16,12 +16,13 @@ void SceneMeshes::set(const Scene& scene) {
     meshes_.push_back(std::make_unique<GpuMesh>(o.mesh));
     bounds_.push_back(boundingSphereOf(o.mesh.positions));
     const bool prepared = o.casts && !o.caster.mesh.positions.empty();
-    closed_.push_back(prepared ? o.caster.report.closed() : prepareCaster(o.mesh).report.closed());
+    closed_.push_back(prepared ? o.caster.report.closedManifold()
+                               : prepareCaster(o.mesh).report.closedManifold());
   }
 }
 
 std::size_t SceneMeshes::place(const Scene& scene, double time, const glm::mat4& viewProjection) {
-  const Plane nearPlane = viewFrustumPlanes(viewProjection)[4];
+  const Plane nearPlane = viewFrustum(viewProjection, false).planes[4];
   const float length = glm::length(glm::vec3(nearPlane));
   models_.clear();
   cutByNearPlane_.assign(scene.objects.size(), false);
@@ -29,7 +30,7 @@ std::size_t SceneMeshes::place(const Scene& scene, double time, const glm::mat4&
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     models_.push_back(scene.objects[i].modelAt(time));
     const BoundingSphere world = worldBounds(bounds_[i], models_[i]);
-    cutByNearPlane_[i] = (glm::dot(glm::vec3(nearPlane), world.center) + nearPlane.w) / length < world.radius;
+    cutByNearPlane_[i] = (glm::dot(glm::vec3(nearPlane), world.centre) + nearPlane.w) / length < world.radius;
     closedCut += cutByNearPlane_[i] && closed_[i] ? 1 : 0;
   }
   return closedCut;
@@ -48,7 +49,7 @@ void SceneMeshes::draw(const Scene& scene, const glm::mat4& viewProjection, cons
   light_.set("shininess", 32.0f);
   for (std::size_t i = 0; i < meshes_.size(); ++i) {
     light_.set("model", models_[i]);
-    light_.set("colour", scene.objects[i].color);
+    light_.set("colour", scene.objects[i].colour);
     if (closed_[i] && !cutByNearPlane_[i])
       glEnable(GL_CULL_FACE);  // a closed object's back faces are hidden anyway
     else                       // an open surface is seen from both sides; a cut one through the cut

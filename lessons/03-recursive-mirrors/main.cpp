@@ -77,7 +77,7 @@ class RecursiveMirrors final : public Lesson {
     // Plan first: which re-renderings the culling keeps, and how far the deepest one lies.
     Level root;
     root.eye = f.eye;
-    root.frustum = frustumOf(f.projection * f.view, false);  // the far plane is chosen below
+    root.frustum = viewFrustum(f.projection * f.view, false);  // the far plane is chosen below
     std::uint64_t planned = 0;
     float farthest = 0.0f;
     visit(f, root, [&](const Level& l) {
@@ -85,7 +85,7 @@ class RecursiveMirrors final : public Lesson {
         throw UsageError(std::to_string(f.option("mirrors")) + " mirrors " + std::to_string(depth) +
                          " bounces deep need more than " + std::to_string(kMaxRenderings) +
                          " scene renderings; lower the depth or turn culling on");
-      farthest = std::max(farthest, glm::length(l.eye - sceneBounds_.center) + sceneBounds_.radius);
+      farthest = std::max(farthest, glm::length(l.eye - sceneBounds_.centre) + sceneBounds_.radius);
     });
     const float cameraFar = f.projection[3][2] / (f.projection[2][2] + 1.0f);  // glm::perspective's far
     const glm::mat4 projection =

@@ -53,9 +53,9 @@ class InvertShadowVolumes final : public Lesson {
         ball_(ballMesh_),
         frame_(frameMesh_),
         marker_(markerMesh_),
-        cubeCaster_(cubeMesh_),
-        ballCaster_(ballMesh_),
-        frameCaster_(frameMesh_) {}
+        cubeCaster_(prepareCaster(cubeMesh_)),
+        ballCaster_(prepareCaster(ballMesh_)),
+        frameCaster_(prepareCaster(frameMesh_)) {}
 
   void render(Frame& f) override {
     glClearColor(0.1f, 0.1f, 0.13f, 1.0f);
@@ -133,7 +133,7 @@ class InvertShadowVolumes final : public Lesson {
 
   bool isCaster(const Object& o) const { return o.mesh != &groundMesh_; }
 
-  const CasterEdges& casterFor(const Object& o) const {
+  const PreparedCaster& casterFor(const Object& o) const {
     if (o.mesh == &cubeMesh_) return cubeCaster_;
     if (o.mesh == &ballMesh_) return ballCaster_;
     return frameCaster_;
@@ -147,9 +147,9 @@ class InvertShadowVolumes final : public Lesson {
     std::size_t i = 0;
     for (const Object& o : sceneAt(f)) {
       if (!isCaster(o)) continue;
-      const CasterEdges& c = casterFor(o);
+      const PreparedCaster& c = casterFor(o);
       const glm::vec4 light = glm::inverse(o.model) * kLight;
-      volumeGpu_[i].upload(silhouetteVolume(c, light, kToInfinity).vertices);
+      volumeGpu_[i].upload(silhouetteVolume(c, light, kInfinity).vertices);
       volumeModels_.push_back(o.model);
       built.push_back(&volumeGpu_[i++]);
     }
@@ -192,7 +192,7 @@ class InvertShadowVolumes final : public Lesson {
   Program light_, volume_, flat_;
   Mesh groundMesh_, cubeMesh_, ballMesh_, frameMesh_, markerMesh_;
   GpuMesh ground_, cube_, ball_, frame_, marker_;
-  CasterEdges cubeCaster_, ballCaster_, frameCaster_;
+  PreparedCaster cubeCaster_, ballCaster_, frameCaster_;
   GpuTriangles volumeGpu_[2];
   std::vector<glm::mat4> volumeModels_;
 

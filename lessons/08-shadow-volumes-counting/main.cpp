@@ -50,9 +50,9 @@ class CountingShadowVolumes final : public Lesson {
         torus_(torusMesh_),
         ball_(ballMesh_),
         marker_(markerMesh_),
-        cubeCaster_(cubeMesh_),
-        torusCaster_(torusMesh_),
-        ballCaster_(ballMesh_) {}
+        cubeCaster_(prepareCaster(cubeMesh_)),
+        torusCaster_(prepareCaster(torusMesh_)),
+        ballCaster_(prepareCaster(ballMesh_)) {}
 
   void render(Frame& f) override {
     glClearColor(0.1f, 0.1f, 0.13f, 1.0f);
@@ -147,7 +147,7 @@ class CountingShadowVolumes final : public Lesson {
 
   bool isCaster(const Object& o) const { return o.mesh != &groundMesh_; }
 
-  const CasterEdges& casterFor(const Object& o) const {
+  const PreparedCaster& casterFor(const Object& o) const {
     if (o.mesh == &cubeMesh_) return cubeCaster_;
     if (o.mesh == &torusMesh_) return torusCaster_;
     return ballCaster_;
@@ -156,13 +156,12 @@ class CountingShadowVolumes final : public Lesson {
   // The volumes, in each caster's own space: per lit triangle (extendVolume) or from the
   // silhouette, to infinity or to the chosen length.
   void buildVolumes(const Frame& f, const std::vector<Object>& scene, glm::vec4 worldLight) {
-    const float distance =
-        f.option("extrusion") == 0 ? kToInfinity : static_cast<float>(f.option("extrusion"));
+    const float distance = f.option("extrusion") == 0 ? kInfinity : static_cast<float>(f.option("extrusion"));
     volumeModels_.clear();
     std::size_t i = 0;
     for (const Object& o : scene) {
       if (!isCaster(o)) continue;
-      const CasterEdges& c = casterFor(o);
+      const PreparedCaster& c = casterFor(o);
       const glm::vec4 light = glm::inverse(o.model) * worldLight;
       volumeGpu_[i++].upload(f.on("silhouette") ? silhouetteVolume(c, light, distance).vertices
                                                 : polygonVolumes(*o.mesh, light, distance).vertices);
@@ -201,7 +200,7 @@ class CountingShadowVolumes final : public Lesson {
   Program light_, volume_, flat_;
   Mesh groundMesh_, cubeMesh_, torusMesh_, ballMesh_, markerMesh_;
   GpuMesh ground_, cube_, torus_, ball_, marker_;
-  CasterEdges cubeCaster_, torusCaster_, ballCaster_;
+  PreparedCaster cubeCaster_, torusCaster_, ballCaster_;
   GpuTriangles volumeGpu_[2];
   std::vector<glm::mat4> volumeModels_;
 

@@ -44,13 +44,11 @@ constexpr float kFlatHeight = 0.2f;    // the plane the teapot is flattened onto
 constexpr float kMatrixReach = 60.0f;  // how far the matrix pushes away from a directional light
 constexpr glm::vec3 kAmbient{0.3f};
 
-// What one object needs for shadow volumes: welded positions and their edge adjacency.
+// What one object needs: its mesh as drawn, and as a caster (welded, its edges' faces).
 struct Caster {
-  Mesh drawn, welded;
-  EdgeAdjacency adjacency;
-  explicit Caster(Mesh mesh) : drawn(std::move(mesh)), welded(weldByPosition(drawn).mesh) {
-    adjacency = buildEdgeAdjacency(welded.indices, welded.positions.size());
-  }
+  Mesh drawn;
+  PreparedCaster prepared;
+  explicit Caster(Mesh mesh) : drawn(std::move(mesh)), prepared(prepareCaster(drawn)) {}
 };
 
 Mesh makeTeapot();  // the scene's teapot, built after the lesson
@@ -164,10 +162,11 @@ class CutoutExtrusion final : public Lesson {
       logo_ = std::make_unique<Caster>(makeCutout(rows, 1.8f / static_cast<float>(rows.size())));
       logoGpu_ = std::make_unique<GpuMesh>(logo_->drawn);
       // Static geometry, built once: the prism for the matrix, the doubled border for the GPU.
-      prism_.upload(cutoutPrism(logo_->welded, logo_->adjacency).vertices);
+      prism_.upload(cutoutPrism(logo_->prepared.mesh, logo_->prepared.adjacency).vertices);
       const glm::vec4 fromAbove(0, 1, 0, 0);  // any light above: a cut-out's border is its silhouette
       doubled_.upload(doubledVertexVolume(
-          logo_->welded, silhouetteEdges(logo_->adjacency, facesLight(logo_->welded, fromAbove))));
+          logo_->prepared.mesh,
+          possibleSilhouetteEdges(logo_->prepared.adjacency, facesLight(logo_->prepared.mesh, fromAbove))));
     }
     const int slices = f.option("slices");
     if (!sphere_ || slices != sphereSlices_) {
@@ -185,8 +184,9 @@ class CutoutExtrusion final : public Lesson {
     logoEdgeOn_ = std::abs(logoLight_.y) <= 1e-4f * scale;
     if (f.on("logo") && !logoEdgeOn_ && f.option("method") == kCpu) {
       const float distance =
-          f.option("distance") == 0 ? kToInfinity : 0.1f * static_cast<float>(f.option("distance"));
-      logoVolume_.upload(silhouetteVolume(logo_->welded, logo_->adjacency, logoLight_, distance).vertices);
+          f.option("distance") == 0 ? kInfinity : 0.1f * static_cast<float>(f.option("distance"));
+      logoVolume_.upload(
+          silhouetteVolume(logo_->prepared.mesh, logo_->prepared.adjacency, logoLight_, distance).vertices);
     }
     if (f.on("logo") && !logoEdgeOn_ && f.option("method") == kMatrix)
       logoMatrix_ = cutoutExtrusionMatrix(logoLight_, kMatrixReach);  // one matrix per light position
@@ -198,9 +198,9 @@ class CutoutExtrusion final : public Lesson {
       const glm::mat4 model = objectModel(f);
       const glm::vec4 objectLight = glm::inverse(model) * light;
       const glm::vec4 plane = glm::transpose(model) * glm::vec4(0, 1, 0, -kFlatHeight);  // in its own space
-      const std::vector<Segment> outline =
-          nonzeroOutline(projectedSilhouette(object.welded, object.adjacency, objectLight, plane), plane);
-      objectVolume_.upload(flattenedVolume(outline, objectLight, kToInfinity).vertices);
+      const std::vector<Segment> outline = nonzeroOutline(
+          projectedSilhouette(object.prepared.mesh, object.prepared.adjacency, objectLight, plane), plane);
+      objectVolume_.upload(flattenedVolume(outline, objectLight, kInfinity).vertices);
     }
   }
 

@@ -48,7 +48,6 @@ using namespace stencil;
 
 namespace {
 
-constexpr float kInfinity = std::numeric_limits<float>::infinity();
 constexpr int kMaxLights = 1024;
 
 LessonInfo lessonInfo();  // the options, variants and camera, after the lesson
@@ -71,7 +70,7 @@ constexpr glm::vec3 kLightColour{1.7f, 1.6f, 1.4f};
 AreaLight areaLight(const Frame& f);
 glm::mat4 slabModel();
 Mesh matFrom(const Mesh& ground);
-void penumbraWedges(const CasterEdges& caster, const AreaLight& area, float scale,
+void penumbraWedges(const PreparedCaster& caster, const AreaLight& area, float scale,
                     std::vector<glm::vec4>& out, std::vector<std::pair<GLint, GLsizei>>& ranges);
 void blit(GLuint from, GLuint to, glm::ivec2 size, GLbitfield mask);
 
@@ -101,8 +100,8 @@ class SoftShadows final : public Lesson {
         mat_(matMesh_),
         slab_(slabMesh_),
         ball_(ballMesh_),
-        slabEdges_(transformed(slabMesh_, slabModel())),
-        ballEdges_(transformed(ballMesh_, glm::translate(glm::mat4(1.0f), kBallCentre))) {
+        slabEdges_(prepareCaster(transformed(slabMesh_, slabModel()))),
+        ballEdges_(prepareCaster(transformed(ballMesh_, glm::translate(glm::mat4(1.0f), kBallCentre)))) {
     window_.upload(
         {{-1, -1, 0, 1}, {1, -1, 0, 1}, {1, 1, 0, 1}, {-1, -1, 0, 1}, {1, 1, 0, 1}, {-1, 1, 0, 1}});
     glGenTextures(1, &lightsTexture_);
@@ -263,8 +262,8 @@ class SoftShadows final : public Lesson {
         glStencilOp(GL_KEEP, GL_KEEP, GL_INVERT);  // depth pass: one more crossing, parity flips
         for (int i = first; i < last; ++i) {
           glStencilMask(f.on("bit-mask") ? 1u << (i % 8) : 0xFFu);  // light i's bit alone
-          for (const CasterEdges* c : casters(f))
-            drawVolume(f, silhouetteVolume(*c, samples_[static_cast<std::size_t>(i)], kToInfinity));
+          for (const PreparedCaster* c : casters(f))
+            drawVolume(f, silhouetteVolume(*c, samples_[static_cast<std::size_t>(i)], kInfinity));
         }
         restoreState();
       }
@@ -323,8 +322,8 @@ class SoftShadows final : public Lesson {
       }
       glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);   // behind: the ray leaves a volume
       glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);  // behind: it enters one
-      for (const CasterEdges* c : casters(f)) {
-        const ClosedVolume v = closedVolume(c->welded, c->adjacency, light, kToInfinity);
+      for (const PreparedCaster* c : casters(f)) {
+        const ClosedVolume v = closedVolume(c->mesh, c->adjacency, light, kInfinity);
         const std::size_t sides = 3 * v.sideTriangles, lightCap = 3 * v.lightCapTriangles;
         volumeStream_.upload(v.triangles.vertices);
         volume_.set("transform", f.projection * f.view);
@@ -355,7 +354,7 @@ class SoftShadows final : public Lesson {
       std::vector<glm::vec4> wedges;
       std::vector<std::pair<GLint, GLsizei>> ranges;
       const float scale = 1.02f * static_cast<float>(f.option("wedge-size")) / 100.0f;  // 2% to spare
-      for (const CasterEdges* c : casters(f)) penumbraWedges(*c, area, scale, wedges, ranges);
+      for (const PreparedCaster* c : casters(f)) penumbraWedges(*c, area, scale, wedges, ranges);
       volumeState(f);
       volumeStream_.upload(wedges);
       for (const auto& [first, count] : ranges) {
@@ -423,8 +422,8 @@ class SoftShadows final : public Lesson {
     glStencilMask(0xFF);
   }
 
-  std::vector<const CasterEdges*> casters(const Frame& f) const {
-    std::vector<const CasterEdges*> c;
+  std::vector<const PreparedCaster*> casters(const Frame& f) const {
+    std::vector<const PreparedCaster*> c;
     if (f.option("casters") & 1) c.push_back(&slabEdges_);
     if (f.option("casters") & 2) c.push_back(&ballEdges_);
     return c;
@@ -737,7 +736,7 @@ class SoftShadows final : public Lesson {
   GLuint lightsTexture_ = 0;
   Mesh groundMesh_, matMesh_, slabMesh_, ballMesh_;
   GpuMesh ground_, mat_, slab_, ball_;
-  CasterEdges slabEdges_, ballEdges_;  // welded, in world space (the scene stands still)
+  PreparedCaster slabEdges_, ballEdges_;  // welded, in world space (the scene stands still)
   GpuTriangles volumeStream_, window_;
   std::unique_ptr<Target> target_, saved_, average_;
   GLuint framework_ = 0;
@@ -872,7 +871,7 @@ std::vector<glm::vec4> convexHull(const std::vector<glm::dvec3>& p) {
 // points are convex combinations of the corners' sides), so a receiver whose lights disagree lies
 // in some wedge. Appends the triangles (w = 1) and each wedge's (first vertex, vertex count).
 // Throws std::logic_error for an edge at or above the light (the lesson's scene has none).
-void penumbraWedges(const CasterEdges& caster, const AreaLight& area, float scale,
+void penumbraWedges(const PreparedCaster& caster, const AreaLight& area, float scale,
                     std::vector<glm::vec4>& out, std::vector<std::pair<GLint, GLsizei>>& ranges) {
   const glm::dvec2 half = 0.5 * static_cast<double>(scale) *
                           glm::dvec2(area.shape == LightShape::Disk ? glm::vec2(area.size.x) : area.size);
@@ -880,8 +879,8 @@ void penumbraWedges(const CasterEdges& caster, const AreaLight& area, float scal
   const std::array<glm::dvec3, 4> corners{
       centre + glm::dvec3(-half.x, 0.0, -half.y), centre + glm::dvec3(half.x, 0.0, -half.y),
       centre + glm::dvec3(half.x, 0.0, half.y), centre + glm::dvec3(-half.x, 0.0, half.y)};
-  const std::vector<glm::vec3>& position = caster.welded.positions;
-  const std::vector<std::uint32_t>& index = caster.welded.indices;
+  const std::vector<glm::vec3>& position = caster.mesh.positions;
+  const std::vector<std::uint32_t>& index = caster.mesh.indices;
   auto faces = [&](std::int32_t face, const glm::dvec3& light) {
     const glm::dvec3 a(position[index[3 * static_cast<std::size_t>(face)]]);
     const glm::dvec3 b(position[index[3 * static_cast<std::size_t>(face) + 1]]);

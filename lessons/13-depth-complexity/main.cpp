@@ -224,12 +224,12 @@ class DepthComplexity final : public Lesson {
     light_.set("viewProjection", f.projection * f.view);
     light_.set("ambient", scene.ambient + glm::vec3(0.15f));
     light_.set("light", light.position);
-    light_.set("lightColour", light.color);
+    light_.set("lightColour", light.colour);
     light_.set("eye", f.eye);
     light_.set("shininess", 24.0f);
     for (const SceneObject& o : scene.objects) {
       light_.set("model", o.modelAt(f.time));
-      light_.set("colour", o.color);
+      light_.set("colour", o.colour);
       gpu_.at(&o.mesh)->draw();
     }
   }
@@ -259,7 +259,7 @@ class DepthComplexity final : public Lesson {
     glStencilOp(GL_KEEP, up, up);  // every fragment that reaches the stencil counts
     const glm::mat4 viewProjection = f.projection * f.view;
     const std::array<glm::vec3, 4> nearRect = nearRectangle(viewProjection);
-    const std::vector<Plane> frustum = viewFrustumPlanes(viewProjection);
+    const Frustum frustum = viewFrustum(viewProjection, false);
     std::vector<BoundingSphere> world;
     for (const Caster& c : casters_)
       world.push_back(worldBounds(c.bounds, scene_.objects[c.object].modelAt(f.time)));

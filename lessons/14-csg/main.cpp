@@ -796,7 +796,7 @@ CsgScene goldfeatherScene(int scene, int op, int side) {
 CsgScene fileScene(const Scene& file, double time) {
   CsgScene s;
   for (const SceneObject& o : file.objects)
-    s.primitives.push_back({o.name, o.mesh, o.modelAt(time), o.color});
+    s.primitives.push_back({o.name, o.mesh, o.modelAt(time), o.colour});
   s.expression = file.csg;
   s.spinDegPerSecond = 0.0f;
   return s;

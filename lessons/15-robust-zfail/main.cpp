@@ -41,8 +41,6 @@ using namespace stencil;
 
 namespace {
 
-constexpr float kInfinity = std::numeric_limits<float>::infinity();
-
 Scene builtInScene();  // defined after the lesson
 
 // The paper's requirements, checked once: closed, two-manifold, consistently wound casters
@@ -56,7 +54,7 @@ void checkRequirements(const Scene& scene) {
     if (lastRow != glm::vec4(0, 0, 0, 1))
       throw UsageError(where + "object '" + o.name +
                        "': its model matrix is projective; shadow volumes need w >= 0");
-    if (!o.casts || o.caster.report.closed()) continue;
+    if (!o.casts || o.caster.report.closedManifold()) continue;
     // Non-manifold and inconsistent casters are refused when the file is read; open ones are left.
     throw UsageError(
         where + "caster '" + o.name + "' is open (" + std::to_string(o.caster.report.borderEdges) +
@@ -77,7 +75,7 @@ class RobustZFail final : public Lesson {
     checkRequirements(scene_);
     for (const SceneObject& o : scene_.objects) {
       gpu_.push_back(std::make_unique<GpuMesh>(o.mesh));
-      const bool closed = o.casts && o.caster.report.closed();
+      const bool closed = o.casts && o.caster.report.closedManifold();
       convex_.push_back(closed && isConvex(o.caster.mesh, o.caster.adjacency));
       casterBounds_.push_back(closed ? boundingSphereOf(o.caster.mesh.positions) : BoundingSphere{});
     }
@@ -171,7 +169,7 @@ class RobustZFail final : public Lesson {
       glDepthFunc(GL_EQUAL);  // exactly the visible surfaces of pass 1
       glEnable(GL_BLEND);
       glBlendFunc(GL_ONE, GL_ONE);  // lights add up
-      drawScene(f, models, glm::vec3(0), lights[i].light.position, lights[i].light.color,
+      drawScene(f, models, glm::vec3(0), lights[i].light.position, lights[i].light.colour,
                 lights[i].light.radius);
       glDisable(GL_BLEND);
       glDisable(GL_STENCIL_TEST);
@@ -231,14 +229,14 @@ class RobustZFail final : public Lesson {
   // depth clamping keep their far ends beyond the far plane.
   float extrusionReach(const Frame& f, const std::vector<glm::mat4>& models, const glm::vec4& light) const {
     const bool parallel = f.projection[2][3] == 0.0f;  // clip w does not depend on depth
-    if (!parallel) return kToInfinity;
+    if (!parallel) return kInfinity;
     std::vector<glm::vec3> points;
     for (std::size_t i = 0; i < scene_.objects.size(); ++i)
       for (const glm::vec3& p : scene_.objects[i].mesh.positions)
         points.push_back(models[i] * glm::vec4(p, 1));
     const BoundingSphere s = boundingSphereOf(points);
     if (light.w == 0.0f) return 2.0f * s.radius;  // from any point across the whole scene
-    return glm::length(glm::vec3(light) / light.w - s.center) + s.radius;  // past the farthest point
+    return glm::length(glm::vec3(light) / light.w - s.centre) + s.radius;  // past the farthest point
   }
 
   // Every caster's closed volume for one light, in the caster's own space.
@@ -261,15 +259,16 @@ class RobustZFail final : public Lesson {
       }
       const glm::vec4 light = glm::inverse(models[i]) * worldLight;
       const ClosedVolume v = closedVolume(o.caster.mesh, o.caster.adjacency, light, reach);
-      f.count("silhouette_edges", v.silhouetteEdges);
+      f.count("silhouette_edges", v.possibleSilhouetteEdges);
       f.count("side_triangles", v.sideTriangles);
       f.count("light_cap_triangles", v.lightCapTriangles);
       f.count("dark_cap_triangles", v.darkCapTriangles);
       // How deep this volume can nest (geometry/shadow_volume.h): past a group's 127, the
       // caster is counted in pieces of its light cap instead, each at most 127 deep.
       const BoundingSphere& b = casterBounds_[i];
-      const bool outside = light.w == 0.0f || glm::distance(glm::vec3(light) / light.w, b.center) > b.radius;
-      const std::size_t nesting = nestingBound(v.lightCapTriangles, v.silhouetteEdges, convex_[i], outside);
+      const bool outside = light.w == 0.0f || glm::distance(glm::vec3(light) / light.w, b.centre) > b.radius;
+      const std::size_t nesting =
+          nestingBound(v.lightCapTriangles, v.possibleSilhouetteEdges, convex_[i], outside);
       std::vector<ClosedVolume> parts;
       if (nesting <= 127) {
         parts.push_back(v);
@@ -345,7 +344,7 @@ class RobustZFail final : public Lesson {
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     for (std::size_t i = 0; i < lights.size(); ++i)
-      drawVolumes(f, i, glm::vec4(lights[i].light.color, 0.12f));
+      drawVolumes(f, i, glm::vec4(lights[i].light.colour, 0.12f));
     glDisable(GL_BLEND);
     f.pass("show-volumes");
 
@@ -359,7 +358,7 @@ class RobustZFail final : public Lesson {
       for (const ShiningLight& l : lights) {
         const glm::vec4 light = glm::inverse(volumeModels_[c]) * l.light.position;
         for (const SilhouetteEdge& e :
-             silhouetteEdges(o.caster.adjacency, facesLight(o.caster.mesh, light))) {
+             possibleSilhouetteEdges(o.caster.adjacency, facesLight(o.caster.mesh, light))) {
           segments.push_back(glm::vec4(o.caster.mesh.positions[e.v0], 1.0f));
           segments.push_back(glm::vec4(o.caster.mesh.positions[e.v1], 1.0f));
         }
@@ -385,7 +384,7 @@ class RobustZFail final : public Lesson {
     light_.set("shininess", 32.0f);
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
       light_.set("model", models[i]);
-      light_.set("colour", scene_.objects[i].color);
+      light_.set("colour", scene_.objects[i].colour);
       frontFaceFor(models[i]);
       gpu_[i]->draw();
     }

@@ -11,7 +11,7 @@
 //      only (doubledVertexArray; on the GPU gl/doubled_caster.h; shaders/common/extrude.vert
 //      sends the w = 0 copies to infinity away from the light);
 //   2. the possible silhouette: edges between a face towards and a face away from the light,
-//      found in object space (geometry/shadow_volume.h's facesLight and silhouetteEdges) and
+//      found in object space (geometry/shadow_volume.h's facesLight and possibleSilhouetteEdges) and
 //      extruded into side quads that face out of the volume (sideIndices);
 //   3. the case from the occlusion pyramid, from the light to the camera's near rectangle
 //      (nearRectangle, occlusionPyramid, shadowCase): outside it z-pass with the sides alone
@@ -67,7 +67,6 @@ using namespace stencil;
 
 namespace {
 
-constexpr float kInfinity = std::numeric_limits<float>::infinity();
 Scene builtInScene(int slices, bool many, bool moving);  // with the options, after the lesson
 
 // ---- 1. the doubled vertex array --------------------------------------------------------------
@@ -94,10 +93,10 @@ struct Caster {
 // kinds twice.
 std::vector<SilhouetteEdge> possibleSilhouette(Caster& c, const PreparedCaster& p, const glm::vec4& light,
                                                const std::vector<bool>& lit, int how) {
-  if (!p.report.closed()) return twoSidedSilhouetteEdges(p.adjacency, lit);
-  if (how == 0) return silhouetteEdges(p.adjacency, lit);
+  if (!p.report.closedManifold()) return twoSidedSilhouetteEdges(p.adjacency, lit);
+  if (how == 0) return possibleSilhouetteEdges(p.adjacency, lit);
   if (!c.streaming) c.streaming = std::make_unique<SilhouetteCaster>(prepareSilhouettes(p.mesh, p.adjacency));
-  if (how == 1) return silhouetteEdges(*c.streaming, light);
+  if (how == 1) return possibleSilhouetteEdges(*c.streaming, light);
   if (!c.dual) c.dual = std::make_unique<DualSilhouettes>(*c.streaming);
   std::vector<SilhouetteEdge> edges;
   c.dual->query(light, edges);
@@ -146,7 +145,7 @@ VolumeIndices volumeOf(const PreparedCaster& p, const glm::vec4& light, const Re
                        const std::vector<bool>& lit, const std::vector<SilhouetteEdge>& edges,
                        bool splitFan) {
   const Mesh& mesh = p.mesh;
-  const bool twoSided = !p.report.closed();  // an open mesh: a volume from each side of its faces
+  const bool twoSided = !p.report.closedManifold();  // an open mesh: a volume from each side of its faces
   VolumeIndices out;
   CasterVolume& v = out.volume;
   v.zfail = recipe.zfail;
@@ -193,7 +192,7 @@ class FastRobustShadows final : public Lesson {
     prepare(f);
     startCounts(f);
     framework_ = f.framebuffer();  // every pass ends copied into it
-    setDepthMapping(f);  // before anything is cleared or drawn
+    setDepthMapping(f);            // before anything is cleared or drawn
     const ColourFormat colour = f.on("float") ? ColourFormat::RGBA16F : ColourFormat::RGBA8;
     const DepthFormat depth = f.reversedDepth ? DepthFormat::Float32 : DepthFormat::Fixed24;
     if (!target_ || !target_->fits(f.size, colour, depth))
@@ -225,7 +224,7 @@ class FastRobustShadows final : public Lesson {
     endPass(f, "ambient");
 
     // ---- per light: its shadow in the stencil, then its light where the stencil is 0 ----------
-    const std::vector<Plane> frustum = viewFrustumPlanes(viewProjection);
+    const Frustum frustum = viewFrustum(viewProjection, false);
     const std::array<glm::vec3, 4> nearRect = nearRectangle(viewProjection);
     for (int index : lightOrder(f)) {  // the chosen light last: the frame ends with its stencil
       const SceneLight& light = scene_.lights[static_cast<std::size_t>(index)];
@@ -283,7 +282,7 @@ class FastRobustShadows final : public Lesson {
       glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);  // the count stays for the next look
       glEnable(GL_BLEND);
       glBlendFunc(GL_ONE, GL_ONE);  // light adds up
-      meshes_.draw(scene_, projection_ * f.view, f.eye, light.position, light.color, light.radius,
+      meshes_.draw(scene_, projection_ * f.view, f.eye, light.position, light.colour, light.radius,
                    glm::vec3(0));  // with its own fall-off
       glDisable(GL_BLEND);
       glDisable(GL_STENCIL_TEST);
@@ -318,16 +317,16 @@ class FastRobustShadows final : public Lesson {
   };
 
   // Every caster's volume for one light (world, homogeneous), into lightVolumes_ and uploaded.
-  void buildVolumes(Frame& f, const glm::vec4& light, const LightClip& clip,
-                    const std::vector<Plane>& pyramid, const std::vector<Plane>& frustum) {
+  void buildVolumes(Frame& f, const glm::vec4& light, const LightClip& clip, const Frustum& pyramid,
+                    const Frustum& frustum) {
     // 3. Each caster's case, 0 where it misses the light's bounds; Lengyel's choice needs them all.
     std::vector<int> cases;
     bool anyInPyramid = false;
     for (const Caster& c : casters_) {
       const BoundingSphere w = worldBounds(c.bounds, meshes_.models()[c.object]);
       const bool culled =
-          !std::isinf(clip.radius) && culledByLight(clip.centre, clip.radius, w.center, w.radius);
-      cases.push_back(culled ? 0 : shadowCase(pyramid, frustum, w.center, w.radius));
+          !std::isinf(clip.radius) && culledByLight(clip.centre, clip.radius, w.centre, w.radius);
+      cases.push_back(culled ? 0 : shadowCase(pyramid, frustum, w.centre, w.radius));
       anyInPyramid |= cases.back() > 1;
     }
     const auto method = static_cast<ShadowMethod>(f.option("method"));
@@ -359,13 +358,13 @@ class FastRobustShadows final : public Lesson {
     built.volume.shadowCase = shadowCase;
     const std::size_t nesting = nestingOf(caster, p, light, lit, edges.size());
     std::vector<LightVolume> volumes{{c, 0, built.volume, nesting, false}};
-    if (nesting > 127 && p.report.closed()) {
+    if (nesting > 127 && p.report.closedManifold()) {
       volumes.clear();
       built.indices.clear();
       built.split.clear();
       const Recipe full{true, light.w == 0.0f ? DarkCapKind::None : DarkCapKind::Piece, true};
       for (const std::vector<bool>& piece : litFacePieces(lit, 127)) {
-        VolumeIndices v = volumeOf(p, light, full, piece, silhouetteEdges(p.adjacency, piece), false);
+        VolumeIndices v = volumeOf(p, light, full, piece, possibleSilhouetteEdges(p.adjacency, piece), false);
         v.volume.shadowCase = shadowCase;
         volumes.push_back({c, built.indices.size(), v.volume,
                            static_cast<std::size_t>(std::count(piece.begin(), piece.end(), true)), true});
@@ -382,9 +381,9 @@ class FastRobustShadows final : public Lesson {
                                const std::vector<bool>& lit, std::size_t edges) {
     if (c.convex) return 1;
     const bool outside =
-        light.w == 0.0f || glm::distance(glm::vec3(light) / light.w, c.bounds.center) > c.bounds.radius;
+        light.w == 0.0f || glm::distance(glm::vec3(light) / light.w, c.bounds.centre) > c.bounds.radius;
     // An open caster casts from both sides, and a fold of it changes the count by two.
-    if (!p.report.closed()) return nestingBound(p.mesh.indices.size() / 3, 2 * edges, false, outside);
+    if (!p.report.closedManifold()) return nestingBound(p.mesh.indices.size() / 3, 2 * edges, false, outside);
     return nestingBound(static_cast<std::size_t>(std::count(lit.begin(), lit.end(), true)), edges, false,
                         outside);
   }

@@ -1,7 +1,7 @@
 // Silhouette extraction against a plain memory scan of the same data (Google Benchmark).
 //
 // mesh: facesLight (every triangle's three indices and positions: does it face the light?) then
-// silhouetteEdges (every edge of the prepared caster's adjacency: do its two faces disagree?), on
+// possibleSilhouetteEdges (every edge of the prepared caster's adjacency: do its two faces disagree?), on
 // welded spheres and tori of about 1k to 1M triangles. prepared: the same edges from a
 // SilhouetteCaster (face normals and first corners precomputed once, streamed by the facing pass;
 // each edge's two faces read once against one-byte flags). scan: the arrays the mesh version
@@ -100,7 +100,7 @@ std::uint32_t sumWords(const std::vector<T>& v) {
   return s0 + s1 + s2 + s3;
 }
 
-// What both benchmarks read, in bytes: indices and positions (facesLight), edges (silhouetteEdges).
+// What both benchmarks read, in bytes: indices and positions (facesLight), edges (possibleSilhouetteEdges).
 std::int64_t bytesRead(const PreparedCaster& c) {
   return static_cast<std::int64_t>(c.mesh.indices.size() * sizeof(std::uint32_t) +
                                    c.mesh.positions.size() * sizeof(glm::vec3) +
@@ -147,7 +147,7 @@ void meshVersion(benchmark::State& state, const std::string& shape, const Size& 
   std::size_t edges = 0;
   for (auto _ : state) {
     const std::vector<bool> lit = facesLight(c.mesh, light);
-    const std::vector<SilhouetteEdge> silhouette = silhouetteEdges(c.adjacency, lit);
+    const std::vector<SilhouetteEdge> silhouette = possibleSilhouetteEdges(c.adjacency, lit);
     edges = silhouette.size();
     benchmark::DoNotOptimize(silhouette.data());
   }
@@ -163,7 +163,7 @@ void prepared(benchmark::State& state, const std::string& shape, const Size& siz
   std::vector<SilhouetteEdge> silhouette;
   for (auto _ : state) {
     facesLight(c, light, lit);
-    silhouetteEdges(c, lit, silhouette);
+    possibleSilhouetteEdges(c, lit, silhouette);
     benchmark::DoNotOptimize(silhouette.data());
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(c.faceCount()));
@@ -188,7 +188,7 @@ void edgepass(benchmark::State& state, const std::string& shape, const Size& siz
   std::vector<SilhouetteEdge> silhouette;
   facesLight(c, light, lit);
   for (auto _ : state) {
-    silhouetteEdges(c, lit, silhouette);
+    possibleSilhouetteEdges(c, lit, silhouette);
     benchmark::DoNotOptimize(silhouette.data());
   }
   state.counters["triangles"] = static_cast<double>(c.faceCount());
@@ -225,7 +225,7 @@ void byLight(benchmark::State& state, const std::string& shape, const Size& size
         tree->descend(l, silhouette);
     } else {
       facesLight(c, l, lit);
-      silhouetteEdges(c, lit, silhouette);
+      possibleSilhouetteEdges(c, lit, silhouette);
     }
     benchmark::DoNotOptimize(silhouette.data());
     edges += silhouette.size();
@@ -274,7 +274,7 @@ void paired(benchmark::State& state, const std::string& shape, const Size& size)
     const Clock::time_point t0 = Clock::now();
     for (std::size_t i = 0; i < batch; ++i) {
       facesLight(c, light, lit);
-      silhouetteEdges(c, lit, silhouette);
+      possibleSilhouetteEdges(c, lit, silhouette);
       benchmark::DoNotOptimize(silhouette.data());
     }
     const Clock::time_point t1 = Clock::now();
@@ -319,7 +319,7 @@ void edges(benchmark::State& state, const std::string& shape, const Size& size) 
   const PreparedCaster& c = caster(shape, size);
   const std::vector<bool> lit = facesLight(c.mesh, light);
   for (auto _ : state) {
-    const std::vector<SilhouetteEdge> silhouette = silhouetteEdges(c.adjacency, lit);
+    const std::vector<SilhouetteEdge> silhouette = possibleSilhouetteEdges(c.adjacency, lit);
     benchmark::DoNotOptimize(silhouette.data());
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(c.mesh.triangleCount()));
@@ -340,7 +340,7 @@ void scan(benchmark::State& state, const std::string& shape, const Size& size) {
 // A silhouette of a closed mesh is made of closed loops: every vertex starts as many of its
 // directed edges as it ends.
 bool closedLoops(const PreparedCaster& c) {
-  const std::vector<SilhouetteEdge> edges = silhouetteEdges(c.adjacency, facesLight(c.mesh, light));
+  const std::vector<SilhouetteEdge> edges = possibleSilhouetteEdges(c.adjacency, facesLight(c.mesh, light));
   std::vector<int> balance(c.mesh.positions.size(), 0);
   for (const SilhouetteEdge& e : edges) {
     ++balance[e.v0];
@@ -354,8 +354,8 @@ bool closedLoops(const PreparedCaster& c) {
 // The prepared version gives the mesh version's edges, in the same order and direction.
 bool sameAsMeshVersion(const std::string& shape, const Size& size) {
   const PreparedCaster& c = caster(shape, size);
-  const std::vector<SilhouetteEdge> a = silhouetteEdges(c.adjacency, facesLight(c.mesh, light)),
-                                    b = silhouetteEdges(silhouetteCaster(shape, size), light);
+  const std::vector<SilhouetteEdge> a = possibleSilhouetteEdges(c.adjacency, facesLight(c.mesh, light)),
+                                    b = possibleSilhouetteEdges(silhouetteCaster(shape, size), light);
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i)
     if (a[i].v0 != b[i].v0 || a[i].v1 != b[i].v1) return false;
@@ -369,7 +369,7 @@ bool dualAsPrepared(const std::string& shape, const Size& size) {
   std::vector<SilhouetteEdge> found;
   auto same = [&](const glm::vec4& l) {
     dualTree(shape, size).query(l, found);
-    const std::vector<SilhouetteEdge> expected = silhouetteEdges(c, l);
+    const std::vector<SilhouetteEdge> expected = possibleSilhouetteEdges(c, l);
     if (found.size() != expected.size() || expected.empty()) return false;
     for (std::size_t i = 0; i < found.size(); ++i)
       if (found[i].v0 != expected[i].v0 || found[i].v1 != expected[i].v1) return false;
@@ -453,7 +453,8 @@ void writeTable(const TableReporter& reporter, const std::string& file, const st
       text, sizeof text,
       "# Silhouette extraction against a memory scan\n\n"
       "The possible silhouette edges of welded spheres and tori for a point light at (3, 4, 5), two\n"
-      "ways (common/geometry/shadow_volume.h): **mesh**, `facesLight` + `silhouetteEdges` on the mesh and\n"
+      "ways (common/geometry/shadow_volume.h): **mesh**, `facesLight` + `possibleSilhouetteEdges` on the "
+      "mesh and\n"
       "its adjacency (a gathered cross product per triangle, bit flags); **prepared** (the brute force),\n"
       "the same two passes on a `SilhouetteCaster` (face normals and first corners precomputed once and\n"
       "streamed, each edge's two faces read once against one-byte flags; identical edges). Each against\n"
@@ -464,14 +465,15 @@ void writeTable(const TableReporter& reporter, const std::string& file, const st
       "and scan-prepared timed in alternating batches of about 20 us inside one benchmark (wall\n"
       "time), so that both see the same moment of a shared machine: the median of the batches'\n"
       "ratios, and the ratio of the two fastest batches (the machine at its quietest). The halves:\n"
-      "facesLight / the facing pass, silhouetteEdges / the edge pass. prepare: building the\n"
+      "facesLight / the facing pass, possibleSilhouetteEdges / the edge pass. prepare: building the\n"
       "SilhouetteCaster, once per caster. Load average (1 minute) of this 2-core machine, shared with\n"
       "other work: %s at the start, %s at the end. Written by `cmake --build build --target\n"
       "silhouette-benchmark` (every repetition's time in silhouette-extraction.csv, the plot in\n"
       "silhouette-extraction.svg).\n\n",
       repetitions, loadBefore.c_str(), loadAfter.c_str());
   out << text
-      << "| shape | triangles | silhouette edges | mesh ns/tri | (facesLight + silhouetteEdges) | scan "
+      << "| shape | triangles | silhouette edges | mesh ns/tri | (facesLight + possibleSilhouetteEdges) | "
+         "scan "
          "ns/tri | "
          "mesh / scan | prepared ns/tri | (facing + edge pass) | prepared GB/s | scan-prepared ns/tri | "
          "scan-prepared GB/s | prepared / scan-prepared | **paired: prepared / scan-prepared** | "

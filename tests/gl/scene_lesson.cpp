@@ -1,7 +1,7 @@
 // A small lesson that renders scenes from files, for testing what runSceneLesson gives a lesson
 // (--scene, the scene's camera, --mask-out) and the scene oracle. Its shadows are the plainest
 // robust kind there is: every triangle of every caster, whichever way it faces, gets its own
-// closed volume (sides, the triangle as the near cap, the triangle pushed to infinity as the far
+// closed volume (sides, the triangle as the light cap, the triangle pushed to infinity as the dark
 // cap), counted z-fail with wrapping operations, the volumes pushed back by a polygon offset so a
 // cap on a visible surface counts as behind it. Slow, but right for open meshes too, as long as
 // no count reaches 256. Variant z-pass counts the faces in front instead (Kilgard's z-pass), to
@@ -25,7 +25,7 @@ Scene builtInScene() {
   Scene scene;
   scene.camera.eye = {4.0f, 4.0f, 6.0f};
   scene.camera.nearPlane = 0.5f;
-  scene.lights.push_back({.position = {1.5f, 4.0f, -0.8f, 1.0f}, .color = glm::vec3(1.0f)});
+  scene.lights.push_back({.position = {1.5f, 4.0f, -0.8f, 1.0f}, .colour = glm::vec3(1.0f)});
   scene.objects.push_back(sceneObject("ground", makePlane(4.0f), glm::mat4(1.0f), glm::vec3(0.8f), false));
   scene.objects.push_back(sceneObject("box", makeCube(0.5f),
                                       glm::translate(glm::mat4(1.0f), {0.0f, 1.0f, 0.0f}), glm::vec3(0.8f)));
@@ -34,14 +34,14 @@ Scene builtInScene() {
 
 // The triangles' own volumes, closed, in object space.
 std::vector<glm::vec4> triangleVolumes(const Mesh& caster, const glm::vec4& light) {
-  std::vector<glm::vec4> out = polygonVolumes(caster, light, kToInfinity, /*twoSided=*/true).vertices;
+  std::vector<glm::vec4> out = polygonVolumes(caster, light, kInfinity, /*twoSided=*/true).vertices;
   const std::vector<bool> lit = facesLight(caster, light);
   for (std::size_t t = 0; t < caster.triangleCount(); ++t) {
     glm::vec3 p[3];
     for (int k = 0; k < 3; ++k) p[k] = caster.positions[caster.indices[3 * t + k]];
     if (!lit[t]) std::swap(p[1], p[2]);  // walked so it faces the light, as polygonVolumes does
     for (int k = 0; k < 3; ++k) out.emplace_back(p[k], 1.0f);
-    for (int k = 2; k >= 0; --k) out.push_back(extrudeAway(p[k], light, kToInfinity));
+    for (int k = 2; k >= 0; --k) out.push_back(extrudeAway(p[k], light, kInfinity));
   }
   return out;
 }
@@ -83,9 +83,9 @@ class SceneLesson : public Lesson {
       } else {
         glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
         glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
-        glEnable(GL_DEPTH_CLAMP);  // the far caps lie at infinity, beyond a finite far plane
+        glEnable(GL_DEPTH_CLAMP);  // the dark caps lie at infinity, beyond a finite far plane
       }
-      // A near cap lies on its caster's surface: pushed back a little, it always counts as behind
+      // A light cap lies on its caster's surface: pushed back a little, it always counts as behind
       // it (whichever shader computed which depth), so a lit surface does not shadow itself.
       glEnable(GL_POLYGON_OFFSET_FILL);
       glPolygonOffset(1.0f, 1.0f);
@@ -110,7 +110,7 @@ class SceneLesson : public Lesson {
       glDepthFunc(GL_EQUAL);
       glEnable(GL_BLEND);
       glBlendFunc(GL_ONE, GL_ONE);
-      drawObjects(frame, viewProjection, light.position, glm::vec3(0.0f), light.color);
+      drawObjects(frame, viewProjection, light.position, glm::vec3(0.0f), light.colour);
       glDisable(GL_BLEND);
       glDepthFunc(GL_LESS);
       glDepthMask(GL_TRUE);
@@ -142,7 +142,7 @@ class SceneLesson : public Lesson {
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
       const SceneObject& o = scene_.objects[i];
       shaded_.set("model", o.modelAt(frame.time));
-      shaded_.set("colour", o.color);
+      shaded_.set("colour", o.colour);
       meshes_[i].draw();
     }
   }

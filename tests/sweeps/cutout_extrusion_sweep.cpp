@@ -51,19 +51,12 @@ void run(const std::string& args, bool oracleMayFail = false) {
             std::string(LESSON_09) + " --headless --quiet --size " + kSize + " " + args, oracleMayFail);
 }
 
-// "oracle ok: R receiver pixels, S shadowed; D disagree, E of them on edges (...)"
+// The oracle's count of wrong pixels, and of shadowed ones, from its log.
 void readOracle(const fs::path& log, Row& row) {
-  const std::string text = readAll(log);
-  const auto at = text.find("oracle ");
-  long long receivers = 0, shadowed = 0, disagree = 0, onEdges = 0;
-  if (at == std::string::npos ||
-      std::sscanf(text.c_str() + text.find(':', at) + 1,
-                  " %lld receiver pixels, %lld shadowed; %lld disagree, %lld of them on edges", &receivers,
-                  &shadowed, &disagree, &onEdges) != 4)
-    throw std::runtime_error("no oracle line in " + log.string());
-  row.wrong = disagree;
-  row.wrongOffEdges = disagree - onEdges;
-  row.shadowed = shadowed;
+  const OracleLine o = readOracleLine(log);
+  row.wrong = o.disagree;
+  row.wrongOffEdges = o.offEdges();
+  row.shadowed = o.shadowed;
 }
 
 void measure(const fs::path& work, const std::string& settings, int frames, Row& row) {

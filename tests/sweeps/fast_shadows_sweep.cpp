@@ -54,18 +54,6 @@ void run(const std::string& args, bool oracleMayFail = false) {
             oracleMayFail);
 }
 
-long long wrongOffEdges(const fs::path& log) {
-  const std::string text = readAll(log);
-  const auto at = text.find("oracle ");
-  long long receivers = 0, shadowed = 0, disagree = 0, onEdges = 0;
-  if (at == std::string::npos ||
-      std::sscanf(text.c_str() + text.find(':', at) + 1,
-                  " %lld receiver pixels, %lld shadowed; %lld disagree, %lld of them on edges", &receivers,
-                  &shadowed, &disagree, &onEdges) != 4)
-    throw std::runtime_error("no oracle line in " + log.string());
-  return disagree - onEdges;
-}
-
 std::string settings(const Row& r) {
   const auto m = std::find(kMethods.begin(), kMethods.end(), r.method) - kMethods.begin();
   char time[16];
@@ -77,7 +65,7 @@ std::string settings(const Row& r) {
 void measureMethod(const fs::path& work, int frames, Row& row) {
   const fs::path log = work / "oracle.log", stats = work / "stats.json";
   run(settings(row) + " --oracle " + (work / "oracle.png").string() + " 2> " + log.string(), true);
-  row.wrongOffEdges = wrongOffEdges(log);
+  row.wrongOffEdges = readOracleLine(log).offEdges();
   // The counts from one frame at the row's time, with the fill pass; the time from frames
   // without it (they run on past the row's time, 1/60 s apart).
   run(settings(row) + " --set fill=1 --stats > " + stats.string());

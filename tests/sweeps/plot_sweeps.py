@@ -442,7 +442,7 @@ def plot_silhouette_extraction(path):
                 ax.plot([p[0] for p in points], [p[1] for p in points], dashes, color=colour, markersize=3.5,
                         label=label if shape == "sphere" else None)
 
-    line(scan, "mesh", "mesh version (facesLight + silhouetteEdges)", "C3")
+    line(scan, "mesh", "mesh version (facesLight + possibleSilhouetteEdges)", "C3")
     line(scan, "prepared", "brute force (prepared passes)", "C0")
     line(scan, "scan-prepared", "scan of its arrays", "C7", "s-")
     line(scan, "prepare", "preparing the caster (once)", "C2", "^-")

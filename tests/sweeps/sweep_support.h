@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -67,4 +68,22 @@ inline std::string readAll(const std::filesystem::path& p) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+// What a lesson's --oracle line says: "oracle ok: R receiver pixels, S shadowed; D disagree, E of
+// them on edges (...)". Throws std::runtime_error when the log holds no such line.
+struct OracleLine {
+  long long receivers = 0, shadowed = 0, disagree = 0, onEdges = 0;
+  long long offEdges() const { return disagree - onEdges; }
+};
+inline OracleLine readOracleLine(const std::filesystem::path& log) {
+  const std::string text = readAll(log);
+  const auto at = text.find("oracle ");
+  OracleLine o;
+  if (at == std::string::npos ||
+      std::sscanf(text.c_str() + text.find(':', at) + 1,
+                  " %lld receiver pixels, %lld shadowed; %lld disagree, %lld of them on edges", &o.receivers,
+                  &o.shadowed, &o.disagree, &o.onEdges) != 4)
+    throw std::runtime_error("no oracle line in " + log.string());
+  return o;
 }

@@ -25,7 +25,7 @@ void expectVecNear(glm::vec3 actual, glm::vec3 expected, float tolerance) {
 TEST(Aabb, StartsEmpty) {
   const Aabb box;
   EXPECT_TRUE(box.empty());
-  EXPECT_EQ(box.center(), glm::vec3(0.0f));
+  EXPECT_EQ(box.centre(), glm::vec3(0.0f));
   EXPECT_EQ(box.extent(), glm::vec3(0.0f));
   EXPECT_TRUE(stencil::boundsOf({}).empty());
 }
@@ -37,7 +37,7 @@ TEST(Aabb, SinglePointIsAZeroSizeBox) {
   EXPECT_EQ(box.min, glm::vec3(1, -2, 3));
   EXPECT_EQ(box.max, glm::vec3(1, -2, 3));
   EXPECT_EQ(box.extent(), glm::vec3(0.0f));
-  EXPECT_EQ(box.center(), glm::vec3(1, -2, 3));
+  EXPECT_EQ(box.centre(), glm::vec3(1, -2, 3));
 }
 
 TEST(Aabb, BoundsOfKnownPoints) {
@@ -45,7 +45,7 @@ TEST(Aabb, BoundsOfKnownPoints) {
   const Aabb box = stencil::boundsOf({{1, 5, -1}, {-3, 2, 4}, {0, -6, 2}});
   EXPECT_EQ(box.min, glm::vec3(-3, -6, -1));
   EXPECT_EQ(box.max, glm::vec3(1, 5, 4));
-  EXPECT_EQ(box.center(), glm::vec3(-1, -0.5f, 1.5f));
+  EXPECT_EQ(box.centre(), glm::vec3(-1, -0.5f, 1.5f));
   EXPECT_EQ(box.extent(), glm::vec3(4, 11, 5));  // full size, not half
 }
 
@@ -97,13 +97,13 @@ TEST(Aabb, TransformedBoundsTranslateAndStayEmpty) {
 void expectContainsAll(const std::vector<glm::vec3>& points) {
   const stencil::BoundingSphere s = stencil::boundingSphereOf(points);
   for (std::size_t i = 0; i < points.size(); ++i) {
-    EXPECT_LE(glm::distance(points[i], s.center), s.radius) << "point " << i;
+    EXPECT_LE(glm::distance(points[i], s.centre), s.radius) << "point " << i;
   }
   // Never worse than the sphere around the AABB centre reaching the farthest
   // point, which in turn is within the sphere through the AABB's corners.
   const Aabb box = stencil::boundsOf(points);
   float aroundBox = 0.0f;
-  for (const glm::vec3& p : points) aroundBox = std::max(aroundBox, glm::distance(p, box.center()));
+  for (const glm::vec3& p : points) aroundBox = std::max(aroundBox, glm::distance(p, box.centre()));
   EXPECT_LE(s.radius, aroundBox * (1.0f + 1e-5f) + 1e-30f);
   EXPECT_LE(aroundBox, 0.5f * glm::length(box.extent()) * (1.0f + 1e-5f));
 }
@@ -124,18 +124,18 @@ TEST(BoundingSphere, ContainsEveryVertexOfEveryShape) {
 TEST(BoundingSphere, TightOnKnownSets) {
   // Two points: the sphere with them as a diameter.
   const stencil::BoundingSphere pair = stencil::boundingSphereOf({{-1, 0, 0}, {3, 0, 0}});
-  expectVecNear(pair.center, {1, 0, 0}, 1e-6f);
+  expectVecNear(pair.centre, {1, 0, 0}, 1e-6f);
   EXPECT_NEAR(pair.radius, 2.0f, 1e-5f);
 
   // A sphere mesh: every vertex is at distance r from the origin, the poles
   // are +-r apart, so the answer is the sphere itself.
   const stencil::BoundingSphere sphere =
       stencil::boundingSphereOf(stencil::makeSphere(1.5f, 12, 6).positions);
-  expectVecNear(sphere.center, glm::vec3(0.0f), 1e-5f);
+  expectVecNear(sphere.centre, glm::vec3(0.0f), 1e-5f);
   EXPECT_NEAR(sphere.radius, 1.5f, 1e-5f);
 
   const stencil::BoundingSphere single = stencil::boundingSphereOf({{4, 5, 6}});
-  EXPECT_EQ(single.center, glm::vec3(4, 5, 6));
+  EXPECT_EQ(single.centre, glm::vec3(4, 5, 6));
   EXPECT_GE(single.radius, 0.0f);
   EXPECT_LT(single.radius, 1e-6f);
 }

@@ -17,14 +17,6 @@ namespace {
 
 using namespace stencil;
 
-struct Welded {
-  Mesh mesh;
-  EdgeAdjacency adjacency;
-  explicit Welded(const Mesh& m) : mesh(weldByPosition(m).mesh) {
-    adjacency = buildEdgeAdjacency(mesh.indices, mesh.positions.size());
-  }
-};
-
 // Every directed edge of the triangles met by its reverse as often: a closed, consistently
 // wound surface (what a shadow volume must be for the count to come back to zero).
 bool closedSurface(const std::vector<std::uint32_t>& indices) {
@@ -48,7 +40,7 @@ std::vector<std::uint32_t> concat(std::vector<std::uint32_t> a, const std::vecto
 }
 
 TEST(DoubledVertexArray, EachVertexTwiceWithWOneThenZero) {
-  const Welded cube(makeCube(1.0f));
+  const PreparedCaster cube = prepareCaster(makeCube(1.0f));
   const std::vector<glm::vec4> v = doubledVertexArray(cube.mesh);
   const std::size_t n = cube.mesh.positions.size();
   ASSERT_EQ(v.size(), 2 * n);
@@ -59,12 +51,12 @@ TEST(DoubledVertexArray, EachVertexTwiceWithWOneThenZero) {
 }
 
 TEST(SideIndices, CubeFromAboveHasFourQuadsOrFourTriangles) {
-  const Welded cube(makeCube(1.0f));
+  const PreparedCaster cube = prepareCaster(makeCube(1.0f));
   const glm::vec4 point(0.2f, 5.0f, 0.1f, 1.0f), direction(0.0f, 1.0f, 0.0f, 0.0f);
-  const auto edges = silhouetteEdges(cube.adjacency, facesLight(cube.mesh, point));
+  const auto edges = possibleSilhouetteEdges(cube.adjacency, facesLight(cube.mesh, point));
   ASSERT_EQ(edges.size(), 4u);
   EXPECT_EQ(sideIndices(cube.mesh, edges, false).size(), 4u * 6u);
-  const auto directionalEdges = silhouetteEdges(cube.adjacency, facesLight(cube.mesh, direction));
+  const auto directionalEdges = possibleSilhouetteEdges(cube.adjacency, facesLight(cube.mesh, direction));
   const auto converging = sideIndices(cube.mesh, directionalEdges, true);
   ASSERT_EQ(converging.size(), 4u * 3u);
   const auto n = static_cast<std::uint32_t>(cube.mesh.positions.size());
@@ -78,14 +70,14 @@ TEST(SideIndices, CubeFromAboveHasFourQuadsOrFourTriangles) {
 // Sides, light cap and either dark cap close the volume, for convex and non-convex casters and
 // lights on every side; the directional sides close with the light cap alone.
 TEST(FastVolume, SidesAndCapsAreClosed) {
-  const Welded shapes[] = {Welded(makeCube(1.0f)), Welded(makeSphere(1.0f, 16, 8)),
-                           Welded(makeTorus(1.0f, 0.35f, 24, 12))};
+  const PreparedCaster shapes[] = {prepareCaster(makeCube(1.0f)), prepareCaster(makeSphere(1.0f, 16, 8)),
+                                   prepareCaster(makeTorus(1.0f, 0.35f, 24, 12))};
   const glm::vec3 lights[] = {
       {0.3f, 4.0f, 0.2f}, {-3.0f, 0.5f, 2.0f}, {0.1f, -2.5f, -2.0f}, {0.0f, 0.0f, 0.2f}};
-  for (const Welded& s : shapes)
+  for (const PreparedCaster& s : shapes)
     for (const glm::vec3& l : lights) {
       const std::vector<bool> lit = facesLight(s.mesh, glm::vec4(l, 1.0f));
-      const auto edges = silhouetteEdges(s.adjacency, lit);
+      const auto edges = possibleSilhouetteEdges(s.adjacency, lit);
       const auto sides = sideIndices(s.mesh, edges, false);
       const auto lightCap = lightCapIndices(s.mesh, lit);
       EXPECT_TRUE(closedSurface(concat(concat(sides, lightCap), backFaceDarkCapIndices(s.mesh, lit))));
@@ -97,16 +89,15 @@ TEST(FastVolume, SidesAndCapsAreClosed) {
       const std::vector<bool> litFrom = facesLight(s.mesh, direction);
       // Every far copy is the same point at infinity: one index stands for them all.
       std::vector<std::uint32_t> converging =
-          sideIndices(s.mesh, silhouetteEdges(s.adjacency, litFrom), true);
+          sideIndices(s.mesh, possibleSilhouetteEdges(s.adjacency, litFrom), true);
       const auto n = static_cast<std::uint32_t>(s.mesh.positions.size());
       for (std::uint32_t& i : converging) i = std::min(i, n);
       EXPECT_TRUE(closedSurface(concat(converging, lightCapIndices(s.mesh, litFrom))));
     }
 }
 
-// An open box (a cube without its top) and a single square: with both sides of every face
-// closing a volume, sides and caps close, for either dark cap.
-TEST(FastVolume, OpenMeshesCloseFromBothSides) {
+// A welded unit cube without its top faces (y = 0.5): an open mesh, its rim four border edges.
+Mesh openBox() {
   const Mesh cube = weldByPosition(makeCube(1.0f)).mesh;
   Mesh tray = cube;
   tray.indices.clear();
@@ -116,6 +107,13 @@ TEST(FastVolume, OpenMeshesCloseFromBothSides) {
     if (!top)
       tray.indices.insert(tray.indices.end(), cube.indices.begin() + 3 * t, cube.indices.begin() + 3 * t + 3);
   }
+  return tray;
+}
+
+// An open box (a cube without its top) and a single square: with both sides of every face
+// closing a volume, sides and caps close, for either dark cap.
+TEST(FastVolume, OpenMeshesCloseFromBothSides) {
+  const Mesh tray = openBox();
   const Mesh square = weldByPosition(makePlane(1.0f, 2)).mesh;
   const Mesh* meshes[] = {&tray, &square};
   for (const Mesh* m : meshes) {
@@ -139,10 +137,10 @@ TEST(FastVolume, OpenMeshesCloseFromBothSides) {
 // The fan costs one triangle per silhouette edge not touching its apex: O(s), against the
 // back-face cap's O(f).
 TEST(FanDarkCap, OneTrianglePerSilhouetteEdgeBesidesTheApexEdges) {
-  const Welded sphere(makeSphere(1.0f, 32, 16));
+  const PreparedCaster sphere = prepareCaster(makeSphere(1.0f, 32, 16));
   const glm::vec3 light(0.5f, 6.0f, 0.3f);
   const std::vector<bool> lit = facesLight(sphere.mesh, glm::vec4(light, 1.0f));
-  const auto edges = silhouetteEdges(sphere.adjacency, lit);
+  const auto edges = possibleSilhouetteEdges(sphere.adjacency, lit);
   const DarkCap fan = fanDarkCap(sphere.mesh, edges, light);
   EXPECT_EQ(fan.splitTriangles, 0u);
   EXPECT_EQ(fan.triangleCount(), edges.size() - 2);  // one loop: two edges touch the apex
@@ -192,15 +190,7 @@ TEST(FanDarkCap, SplitsTrianglesSpanningHalfTheSky) {
 // the sphere back, and the volume's faces then subtend no solid angle at the light, as a volume
 // that does not hold its light must.
 TEST(FanDarkCap, ALightInsideAnOpenBoxGetsItsSphereBack) {
-  const Mesh cube = weldByPosition(makeCube(1.0f)).mesh;
-  Mesh tray = cube;
-  tray.indices.clear();
-  for (std::size_t t = 0; t < cube.triangleCount(); ++t) {
-    bool top = true;
-    for (int k = 0; k < 3; ++k) top &= cube.positions[cube.indices[3 * t + k]].y > 0.5f;
-    if (!top)
-      tray.indices.insert(tray.indices.end(), cube.indices.begin() + 3 * t, cube.indices.begin() + 3 * t + 3);
-  }
+  const Mesh tray = openBox();
   const EdgeAdjacency adjacency = buildEdgeAdjacency(tray.indices, tray.positions.size());
   const auto n = static_cast<std::uint32_t>(tray.positions.size());
   const auto total = [&](const glm::vec3& light, const std::vector<std::uint32_t>& lightCap,
@@ -237,7 +227,7 @@ TEST(ShadowCase, ThePyramidBetweenTheLightAndTheNearRectangle) {
   const glm::mat4 vp = cameraAtOrigin();
   const auto rect = nearRectangle(vp);
   for (const glm::vec3& c : rect) EXPECT_NEAR(c.z, -0.1f, 1e-5f);
-  const auto frustum = viewFrustumPlanes(vp);
+  const auto frustum = viewFrustum(vp, false);
   {  // a light behind the camera
     const auto pyramid = occlusionPyramid(rect, {0, 0, 10, 1});
     EXPECT_EQ(shadowCase(pyramid, frustum, {0, 0, 5}, 0.5f), 2);   // between light and eye, unseen
@@ -317,7 +307,7 @@ TEST(LightBounds, DepthBoundsHoldTheSphere) {
 TEST(WorldBounds, FollowsARigidMotion) {
   const glm::mat4 m = glm::rotate(glm::translate(glm::mat4(1), {1, 2, 3}), 0.7f, glm::vec3(0, 1, 0));
   const BoundingSphere s = worldBounds({{1, 0, 0}, 0.5f}, m);
-  EXPECT_NEAR(glm::length(s.center - glm::vec3(m * glm::vec4(1, 0, 0, 1))), 0.0f, 1e-6f);
+  EXPECT_NEAR(glm::length(s.centre - glm::vec3(m * glm::vec4(1, 0, 0, 1))), 0.0f, 1e-6f);
   EXPECT_FLOAT_EQ(s.radius, 0.5f);
 }
 
@@ -333,7 +323,7 @@ std::vector<VolumeChoice> choicesFor(ShadowMethod method, float radius) {
   const glm::vec4 light(0, 0, 10, 1);
   const std::vector<BoundingSphere> casters = {{{0, 0, 5}, 0.5f}, {{0, 0, -5}, 0.5f}, {{40, 0, -5}, 0.5f}};
   return chooseVolumes(method, casters, glm::vec3(light), radius, occlusionPyramid(nearRectangle(vp), light),
-                       viewFrustumPlanes(vp));
+                       viewFrustum(vp, false));
 }
 
 }  // namespace

@@ -49,25 +49,25 @@ bool segmentCrossesPolygon(glm::vec3 a, glm::vec3 b, const Square& m) {
 }  // namespace
 
 TEST(Mirror, FrustumOfKeepsWhatTheCameraSees) {
-  const Frustum f = frustumOf(kProjection * kView);
+  const Frustum f = viewFrustum(kProjection * kView);
   ASSERT_EQ(f.planes.size(), 6u);
-  EXPECT_TRUE(inside(f, {0.0f, 0.8f, 0.0f}));                                        // the target
-  EXPECT_FALSE(inside(f, {0.5f, 1.0f, 6.0f}));                                       // behind the eye
-  EXPECT_FALSE(inside(f, {0.0f, 0.8f, -30.0f}));                                     // past the far plane
-  EXPECT_TRUE(inside(frustumOf(kProjection * kView, false), {0.0f, 0.8f, -30.0f}));  // no far plane
-  EXPECT_FALSE(inside(f, {20.0f, 0.8f, 0.0f}));                                      // far to the right
+  EXPECT_TRUE(inside(f, {0.0f, 0.8f, 0.0f}));                                          // the target
+  EXPECT_FALSE(inside(f, {0.5f, 1.0f, 6.0f}));                                         // behind the eye
+  EXPECT_FALSE(inside(f, {0.0f, 0.8f, -30.0f}));                                       // past the far plane
+  EXPECT_TRUE(inside(viewFrustum(kProjection * kView, false), {0.0f, 0.8f, -30.0f}));  // no far plane
+  EXPECT_FALSE(inside(f, {20.0f, 0.8f, 0.0f}));                                        // far to the right
   for (const glm::vec4& p : f.planes) EXPECT_NEAR(glm::length(glm::vec3(p)), 1.0f, 1e-5f);
 }
 
 TEST(Mirror, SphereOutsideOnlyWhenWhollyBehindOnePlane) {
-  const Frustum f = frustumOf(kProjection * kView);
+  const Frustum f = viewFrustum(kProjection * kView);
   EXPECT_TRUE(outside(f, BoundingSphere{{0.5f, 1.0f, 6.0f}, 1.0f}));
   EXPECT_FALSE(outside(f, BoundingSphere{{0.5f, 1.0f, 6.0f}, 2.5f}));  // reaches past the near plane
   EXPECT_FALSE(outside(f, BoundingSphere{{0.0f, 0.8f, 0.0f}, 0.1f}));
 }
 
 TEST(Mirror, PointsOutsideNeedOnePlaneBehindAll) {
-  const Frustum f = frustumOf(kProjection * kView);
+  const Frustum f = viewFrustum(kProjection * kView);
   // One point left of the view, one right: no single plane has both behind it.
   EXPECT_FALSE(outside(f, {{-30.0f, 0.8f, 0.0f}, {30.0f, 0.8f, 0.0f}}));
   EXPECT_TRUE(outside(f, {{-30.0f, 0.8f, 0.0f}, {-25.0f, 0.0f, 1.0f}}));
@@ -100,7 +100,7 @@ TEST(Mirror, FacesEyeOnlyFromTheReflectiveSide) {
 TEST(Mirror, ThroughMirrorMatchesBruteForce) {
   const Square m = tiltedMirror();
   const glm::vec3 eye(0.5f, 1.0f, 4.0f);
-  const Frustum camera = frustumOf(kProjection * kView, false);
+  const Frustum camera = viewFrustum(kProjection * kView, false);
   const Frustum seen = throughMirror(camera, eye, m.corners, m.plane);
   const glm::mat4 reflect = reflectionMatrix(m.plane);
   const glm::vec3 virtualEye = glm::vec3(reflect * glm::vec4(eye, 1));
@@ -128,7 +128,7 @@ TEST(Mirror, ThroughMirrorMatchesBruteForce) {
 TEST(Mirror, MirrorSeenOnlyThroughAnotherMirror) {
   const glm::vec3 eye(0.3f, 1.0f, 1.0f);
   const glm::mat4 view = glm::lookAt(eye, glm::vec3(0.0f, 1.0f, -2.0f), glm::vec3(0, 1, 0));
-  const Frustum camera = frustumOf(kProjection * view, false);
+  const Frustum camera = viewFrustum(kProjection * view, false);
   const auto wall = [](float z, float facing) {
     return Square{planeFrom({0, 0, z}, {0, 0, facing}),
                   {{-1.5f, 0.2f, z}, {1.5f, 0.2f, z}, {1.5f, 1.8f, z}, {-1.5f, 1.8f, z}}};

@@ -153,10 +153,10 @@ TEST(Raycast, DegenerateTriangleNeverHits) {
 TEST(Raycast, CubeHitFromOutsideAlongEachAxis) {
   // Unit cube (half extent 0.5) centred at (1, 2, 3). From 3 units out along an axis with
   // speed 2 towards the centre, the face at 0.5 is 2.5 units away: t = 1.25.
-  const glm::vec3 center(1.0f, 2.0f, 3.0f);
+  const glm::vec3 centre(1.0f, 2.0f, 3.0f);
   const Mesh cube = makeCube(0.5f);
   RayScene scene;
-  ASSERT_EQ(scene.add(cube, translation(center)), 0);
+  ASSERT_EQ(scene.add(cube, translation(centre)), 0);
   EXPECT_EQ(scene.objectCount(), 1u);
   for (int axis = 0; axis < 3; ++axis) {
     for (const float side : {1.0f, -1.0f}) {
@@ -166,7 +166,7 @@ TEST(Raycast, CubeHitFromOutsideAlongEachAxis) {
       glm::vec3 offset(0.0f);
       offset[(axis + 1) % 3] = 0.2f;
       offset[(axis + 2) % 3] = -0.1f;
-      const Ray ray{center + 3.0f * outward + offset, -2.0f * outward};
+      const Ray ray{centre + 3.0f * outward + offset, -2.0f * outward};
       SCOPED_TRACE(testing::Message() << "axis " << axis << " side " << side);
       const std::optional<RayHit> hit = scene.firstHit(ray);
       ASSERT_TRUE(hit.has_value());
@@ -183,12 +183,12 @@ TEST(Raycast, CubeHitFromOutsideAlongEachAxis) {
     }
   }
   // From inside, the far face is hit: 0.5 away at speed 1.
-  const std::optional<RayHit> inside = scene.firstHit({center, {0.0f, 1.0f, 0.0f}});
+  const std::optional<RayHit> inside = scene.firstHit({centre, {0.0f, 1.0f, 0.0f}});
   ASSERT_TRUE(inside.has_value());
   EXPECT_NEAR(inside->t, 0.5f, 1e-6f);
   expectVecNear(inside->normal, {0.0f, 1.0f, 0.0f}, 1e-6f);
   // A ray passing beside the cube misses.
-  EXPECT_FALSE(scene.firstHit({center + glm::vec3(0.51f, 3.0f, 0.0f), {0.0f, -1.0f, 0.0f}}).has_value());
+  EXPECT_FALSE(scene.firstHit({centre + glm::vec3(0.51f, 3.0f, 0.0f), {0.0f, -1.0f, 0.0f}}).has_value());
 }
 
 TEST(Raycast, MirroredObjectKeepsOutwardNormals) {

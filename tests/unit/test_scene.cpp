@@ -36,7 +36,7 @@ TEST(PrepareCaster, WeldsTheCubesSplitVertices) {
   EXPECT_EQ(c.mesh.triangleCount(), 12u);
   EXPECT_TRUE(c.mesh.normals.empty());
   EXPECT_EQ(c.adjacency.edges.size(), 18u);  // 12 cube edges + 6 face diagonals
-  EXPECT_TRUE(c.report.closed());
+  EXPECT_TRUE(c.report.closedManifold());
   EXPECT_TRUE(mentions(c.report, "welded 24 vertices into 8 (vertices split at seams)"))
       << c.report.messages.front();
   EXPECT_EQ(c.report.messages.size(), 1u);
@@ -44,7 +44,7 @@ TEST(PrepareCaster, WeldsTheCubesSplitVertices) {
 
 TEST(PrepareCaster, AClosedWeldedMeshHasNothingToSay) {
   const PreparedCaster c = prepareCaster(tetrahedron());
-  EXPECT_TRUE(c.report.closed());
+  EXPECT_TRUE(c.report.closedManifold());
   EXPECT_TRUE(c.report.messages.empty());
   EXPECT_EQ(c.mesh.triangleCount(), 4u);
 }
@@ -57,7 +57,7 @@ TEST(PrepareCaster, DropsRepeatedIndexAndCollinearTriangles) {
   const PreparedCaster c = prepareCaster(m);
   EXPECT_EQ(c.report.droppedDegenerate, 2u);
   EXPECT_EQ(c.mesh.triangleCount(), 4u);
-  EXPECT_TRUE(c.report.closed());  // the extra vertex is unused; the tetrahedron stays closed
+  EXPECT_TRUE(c.report.closedManifold());  // the extra vertex is unused; the tetrahedron stays closed
   EXPECT_TRUE(mentions(c.report, "dropped 2 degenerate triangles"));
 }
 
@@ -68,7 +68,7 @@ TEST(PrepareCaster, DegenerateTrianglesInsideAClosedMeshLeaveItClosed) {
   cube.indices.insert(cube.indices.end(), {a, b, b, b, a, a});
   const PreparedCaster c = prepareCaster(cube);
   EXPECT_EQ(c.report.droppedDegenerate, 2u);
-  EXPECT_TRUE(c.report.closed());
+  EXPECT_TRUE(c.report.closedManifold());
 }
 
 TEST(PrepareCaster, CountsAndReportsAnOpenMeshsBorderEdges) {
@@ -77,7 +77,7 @@ TEST(PrepareCaster, CountsAndReportsAnOpenMeshsBorderEdges) {
   const PreparedCaster c = prepareCaster(m);
   EXPECT_EQ(c.report.borderEdges, 3u);
   EXPECT_TRUE(c.report.usable());
-  EXPECT_FALSE(c.report.closed());
+  EXPECT_FALSE(c.report.closedManifold());
   EXPECT_TRUE(mentions(c.report, "open: 3 border edges extrude as silhouette edges"));
 
   const PreparedCaster plane = prepareCaster(makePlane(1.0f, 2));
@@ -92,7 +92,7 @@ TEST(PrepareCaster, AnEdgeWithThreeFacesIsReportedAndNotUsable) {
   const PreparedCaster c = prepareCaster(m);
   EXPECT_EQ(c.report.nonManifoldEdges, 1u);
   EXPECT_FALSE(c.report.usable());
-  EXPECT_FALSE(c.report.closed());
+  EXPECT_FALSE(c.report.closedManifold());
   EXPECT_TRUE(mentions(c.report, "not two-manifold: 1 edge shared by three or more faces"));
 }
 

@@ -80,10 +80,10 @@ TEST(SceneFile, AGoodFile) {
 
   ASSERT_EQ(s.lights.size(), 2u);
   EXPECT_EQ(s.lights[0].position, glm::vec4(1, 5, 2, 1));
-  EXPECT_EQ(s.lights[0].color, glm::vec3(1, 0.5f, 0.25f));
+  EXPECT_EQ(s.lights[0].colour, glm::vec3(1, 0.5f, 0.25f));
   EXPECT_FLOAT_EQ(s.lights[0].radius, 12.0f);
   EXPECT_EQ(s.lights[1].position, glm::vec4(0, 1, 0, 0)) << "a unit direction towards the light";
-  EXPECT_EQ(s.lights[1].color, glm::vec3(1.0f));
+  EXPECT_EQ(s.lights[1].colour, glm::vec3(1.0f));
   EXPECT_TRUE(std::isinf(s.lights[1].radius));
 
   ASSERT_EQ(s.objects.size(), 7u);
@@ -92,7 +92,7 @@ TEST(SceneFile, AGoodFile) {
   EXPECT_EQ(ground.mesh.triangleCount(), 2u * 3 * 3);
   EXPECT_FALSE(ground.casts);
   EXPECT_TRUE(ground.receives);
-  EXPECT_EQ(ground.color, glm::vec3(0.5f));
+  EXPECT_EQ(ground.colour, glm::vec3(0.5f));
   EXPECT_TRUE(ground.caster.mesh.positions.empty()) << "only casters are prepared";
 
   const SceneObject& ball = s.objects[1];
@@ -107,7 +107,7 @@ TEST(SceneFile, AGoodFile) {
   EXPECT_FLOAT_EQ(ball.spinDegPerSecond, 45.0f);
   EXPECT_EQ(ball.spinAxis, glm::vec3(1, 0, 0));
   EXPECT_FLOAT_EQ(ball.bob, 0.25f);
-  EXPECT_TRUE(ball.caster.report.closed());
+  EXPECT_TRUE(ball.caster.report.closedManifold());
   EXPECT_FALSE(ball.caster.mesh.positions.empty());
 
   const SceneObject& crate = s.objects[2];
@@ -123,7 +123,7 @@ TEST(SceneFile, AGoodFile) {
   EXPECT_EQ(s.objects[6].mesh.triangleCount(), 12u * 4);
   for (const SceneObject& o : s.objects)
     if (o.casts) {
-      EXPECT_TRUE(o.caster.report.closed()) << o.name;
+      EXPECT_TRUE(o.caster.report.closedManifold()) << o.name;
     }
 }
 
@@ -400,7 +400,7 @@ TEST(SceneFileObj, ACubeSplitAtSeamsIsWelded) {
   EXPECT_EQ(m.mesh.normals.size(), m.mesh.positions.size());
   EXPECT_EQ(m.caster.report.inputVertices, 24u) << "the file's vertices, as its faces share them";
   EXPECT_EQ(m.caster.report.weldedVertices, 8u);
-  EXPECT_TRUE(m.caster.report.closed());
+  EXPECT_TRUE(m.caster.report.closedManifold());
   EXPECT_TRUE(mentions(m.caster.report, "welded 24 vertices into 8 (vertices split at seams)"));
   EXPECT_GT(signedVolume(m.mesh), 7.99);  // 2^3, wound outwards
 }
@@ -413,7 +413,7 @@ TEST(SceneFileObj, AMeshWithoutSeamsReportsNoWelding) {
   EXPECT_EQ(m.mesh.positions.size(), 12u) << "drawn flat: each triangle its own vertices";
   EXPECT_EQ(m.caster.report.inputVertices, 4u);
   EXPECT_EQ(m.caster.report.weldedVertices, 4u);
-  EXPECT_TRUE(m.caster.report.closed());
+  EXPECT_TRUE(m.caster.report.closedManifold());
   EXPECT_FALSE(mentions(m.caster.report, "welded")) << m.caster.report.messages.front();
   EXPECT_TRUE(m.caster.report.messages.empty());
 
@@ -425,7 +425,7 @@ TEST(SceneFileObj, AMeshWithoutSeamsReportsNoWelding) {
   EXPECT_EQ(smooth.drawn.positions.size(), 12u);
   EXPECT_EQ(smooth.shared.positions.size(), 4u);
   const PreparedCaster c = prepareCaster(smooth.shared);
-  EXPECT_TRUE(c.report.closed());
+  EXPECT_TRUE(c.report.closedManifold());
   EXPECT_TRUE(c.report.messages.empty());
 }
 
@@ -533,7 +533,7 @@ TEST(SceneFileObj, AnOpenBoxIsKeptWithItsBorderEdgesReported) {
   EXPECT_EQ(m.mesh.triangleCount(), 10u);
   EXPECT_EQ(m.caster.report.borderEdges, 4u);
   EXPECT_TRUE(m.caster.report.usable());
-  EXPECT_FALSE(m.caster.report.closed());
+  EXPECT_FALSE(m.caster.report.closedManifold());
   EXPECT_TRUE(mentions(m.caster.report, "open: 4 border edges extrude as silhouette edges"));
 }
 
@@ -544,7 +544,8 @@ TEST(SceneFileObj, AnOpenBoxsBorderEdgesAreOnEverySilhouette) {
   ASSERT_EQ(c.adjacency.borderEdgeIndices.size(), 4u);
   for (const glm::vec4& light :
        {glm::vec4(0, 5, 0, 1), glm::vec4(0, -5, 0, 1), glm::vec4(1, 0.2f, 0.3f, 0)}) {
-    const std::vector<SilhouetteEdge> silhouette = silhouetteEdges(c.adjacency, facesLight(c.mesh, light));
+    const std::vector<SilhouetteEdge> silhouette =
+        possibleSilhouetteEdges(c.adjacency, facesLight(c.mesh, light));
     for (std::uint32_t e : c.adjacency.borderEdgeIndices) {
       const Edge& border = c.adjacency.edges[e];
       const bool found = std::any_of(silhouette.begin(), silhouette.end(), [&](const SilhouetteEdge& edge) {
@@ -581,7 +582,7 @@ TEST(SceneFileObj, DegenerateTrianglesInsideAClosedMeshAreDropped) {
   EXPECT_EQ(m.mesh.triangleCount(), 14u) << "drawn as written";
   EXPECT_EQ(m.caster.report.droppedDegenerate, 2u);
   EXPECT_EQ(m.caster.mesh.triangleCount(), 12u);
-  EXPECT_TRUE(m.caster.report.closed());
+  EXPECT_TRUE(m.caster.report.closedManifold());
   EXPECT_TRUE(mentions(m.caster.report, "dropped 2 degenerate triangles"));
 }
 

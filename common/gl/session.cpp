@@ -1,0 +1,110 @@
+// Session (session.h): one run of a lesson, shared by the headless and the window paths; and
+// the course's lesson programs.
+#include "gl/session.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <iostream>
+#include <regex>
+#include <stdexcept>
+
+#include "gl/debug.h"
+#include "gl/errors.h"
+#include "gl/gl.h"
+
+namespace stencil {
+
+Session::Session(const LessonInfo& lessonInfo, const LessonFactory& factory, const CommandLine& cl,
+                 Backend backend)
+    : info(lessonInfo), commandLine(cl), camera(lessonInfo.camera) {
+  const int panel = backend == Backend::Window && !cl.frames ? kWindowPanelWidth : 0;  // beside the picture
+  context = createContext(backend, cl.width + panel, cl.height, info.id + ": " + info.title);
+  enableDebugOutput(context->features());
+  checkNeeds(info.needs, "lesson " + info.id);
+  setVariant(cl.variant.empty() ? info.variants.front().name : cl.variant, cl.settings);
+  makeFramebuffer(cl.width, cl.height);
+  lesson = factory();
+  checkGlErrors("while the lesson set up");
+}
+
+void Session::checkNeeds(const std::vector<Feature>& needs, const std::string& who) const {
+  for (Feature f : needs)
+    if (!hasFeature(context->features(), f))
+      throw UsageError(who + " needs " + featureName(f) + ", which " + context->features().renderer +
+                       " does not offer");
+}
+
+void Session::setVariant(const std::string& name, const std::vector<std::pair<std::string, int>>& settings) {
+  checkNeeds(findVariant(info, name).needs, "variant '" + name + "'");
+  options = optionsFor(info, name, settings);
+  variant = name;
+  camera = findVariant(info, name).camera.value_or(info.camera);
+  const bool wanted = findVariant(info, name).reversedDepth.value_or(info.reversedDepth);
+  const bool canClip = hasFeature(context->features(), Feature::ClipControl);
+  if (wanted && !canClip && !commandLine.quiet && !toldNoClipControl_) {
+    std::cerr << info.id << ": " << context->features().renderer
+              << " has no ARB_clip_control: reversed float depth is off, the 24-bit depth buffer with "
+                 "GL's mapping instead\n";
+    toldNoClipControl_ = true;
+  }
+  reversedDepth = wanted && canClip;
+  // A variant with another depth format gets a framebuffer of that format (the window switches).
+  if (framebuffer && framebuffer->depthFormat() != depthFormat())
+    makeFramebuffer(framebuffer->width(), framebuffer->height());
+}
+
+DepthFormat Session::depthFormat() const {
+  return reversedDepth ? DepthFormat::Float32 : DepthFormat::Fixed24;
+}
+
+void Session::makeFramebuffer(int width, int height) {
+  recorder.reset();
+  framebuffer = std::make_unique<Framebuffer>(width, height, commandLine.stencilBits, depthFormat());
+  if (framebuffer->stencilBits() < info.stencilBits)
+    throw UsageError("the framebuffer has " + std::to_string(framebuffer->stencilBits()) + " stencil bits; " +
+                     info.id + " needs " + std::to_string(info.stencilBits));
+  recorder = std::make_unique<PassRecorder>(info.passes, *framebuffer, context->features());
+}
+
+void Session::resize(int width, int height) {
+  makeFramebuffer(width, height);
+}
+
+void Session::renderFrame(double time, FrameRequest request) {
+  const glm::ivec2 size{framebuffer->width(), framebuffer->height()};
+  resetFrameState(framebuffer->id(), size, context->features());
+  recorder->beginFrame(request);
+  Frame frame(time, size, camera, options, *recorder, context->features(), reversedDepth, framebuffer->id());
+  if (shadowMaskHook)
+    frame.setShadowMaskWriter(shadowMaskHook);
+  else if (commandLine.maskOut && saveShadowMasks)
+    frame.setShadowMaskWriter([this](std::string_view name) {
+      const Image stencil = framebuffer->readStencil();
+      Image mask(stencil.width, stencil.height, 1);
+      for (std::size_t i = 0; i < mask.pixels.size(); ++i) mask.pixels[i] = stencil.pixels[i] == 0 ? 255 : 0;
+      writePng(*commandLine.maskOut / (std::string(name) + ".png"), mask);
+    });
+  frame.pointer = pointer;
+  lesson->render(frame);
+  recorder->endFrame();
+  viewProjection = frame.projection * frame.view;
+  projection = frame.projection;
+  if (commandLine.oracle) shadowCheck = lesson->shadowCheck(frame);
+}
+
+std::vector<std::filesystem::path> courseLessons() {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) return {};
+  static const std::regex kLessonName("[0-9][0-9]-[a-z0-9-]+");
+  std::vector<std::filesystem::path> lessons;
+  for (const auto& entry : std::filesystem::directory_iterator(self.parent_path(), ec))
+    if (entry.is_regular_file(ec) && std::regex_match(entry.path().filename().string(), kLessonName) &&
+        access(entry.path().c_str(), X_OK) == 0)
+      lessons.push_back(entry.path());
+  std::sort(lessons.begin(), lessons.end());
+  return lessons;
+}
+
+}  // namespace stencil
