@@ -422,13 +422,27 @@ int runShadowHours(Session& s, Scene& scene, const LessonFactory& make) {
   const std::string maskName = "light-" + std::to_string(sunIndex);
   const int width = s.framebuffer->width(), height = s.framebuffer->height();
   std::vector<std::uint16_t> counts(static_cast<std::size_t>(width) * height, 0);
-  int steps = 0, nightSteps = 0;
-  double totalMs = 0.0;
-  for (int minutes = cl.shadowFrom; minutes <= cl.shadowTo; minutes += cl.shadowStep, ++steps) {
+  const auto at = [&](int minutes) {
     CivilTime time = sun.time;
     time.hour = minutes / 60;
     time.minute = minutes % 60;
     time.second = 0.0;
+    return time;
+  };
+  bool daylight = false;  // a profile with no daylight step is refused before anything is written
+  for (int minutes = cl.shadowFrom; minutes <= cl.shadowTo && !daylight; minutes += cl.shadowStep)
+    daylight = sunPosition(sun.place, at(minutes)).elevationDeg > 0.0;
+  if (!daylight) {
+    char span[64];
+    std::snprintf(span, sizeof span, "%02d:%02d-%02d:%02d", cl.shadowFrom / 60, cl.shadowFrom % 60,
+                  cl.shadowTo / 60, cl.shadowTo % 60);
+    throw UsageError("--shadow-hours: the sun is down at every step of " + std::string(span) +
+                     " on the scene's date: no sun shadow to profile");
+  }
+  int steps = 0, nightSteps = 0;
+  double totalMs = 0.0;
+  for (int minutes = cl.shadowFrom; minutes <= cl.shadowTo; minutes += cl.shadowStep, ++steps) {
+    const CivilTime time = at(minutes);
     char clock[24];
     std::snprintf(clock, sizeof clock, "%02d%02d", time.hour, time.minute);
     const SunPosition p = sunPosition(sun.place, time);
@@ -478,8 +492,8 @@ int runShadowHours(Session& s, Scene& scene, const LessonFactory& make) {
   for (std::size_t i = 0; i < counts.size(); ++i) raw.pixels[i] = static_cast<std::uint8_t>(counts[i]);
   writePng(rawPathBeside(*cl.shadowHours), raw);
   if (!cl.quiet)
-    std::cerr << "shadow-hours: " << steps << " steps of " << cl.shadowStep << " min, " << nightSteps
-              << " of them at night (the sun down: no sun shadow, not counted), "
+    std::cerr << "shadow-hours: " << steps << (steps == 1 ? " step of " : " steps of ") << cl.shadowStep
+              << " min, " << nightSteps << " of them at night (the sun down: no sun shadow, not counted), "
               << (steps > nightSteps ? totalMs / (steps - nightSteps) : 0.0)
               << " ms a daylight frame on average; " << cl.shadowHours->string()
               << " and its raw counts written\n";

@@ -149,10 +149,18 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
           throw UsageError("--shadow-span expects HH:MM-HH:MM within a day, got '" + span + "'");
         return t->hour * 60 + t->minute;
       };
-      if (span.size() != 11 || span[5] != '-')
+      // H:MM or HH:MM at each end: "9:00-17:00" as the pages write it.
+      const std::size_t dash = span.find('-');
+      const auto end = [&](std::string part) {
+        if (part.size() == 4) part = "0" + part;
+        if (part.size() != 5)
+          throw UsageError("--shadow-span expects HH:MM-HH:MM within a day, got '" + span + "'");
+        return clock(part);
+      };
+      if (dash == std::string::npos)
         throw UsageError("--shadow-span expects HH:MM-HH:MM within a day, got '" + span + "'");
-      cl.shadowFrom = clock(std::string_view(span).substr(0, 5));
-      cl.shadowTo = clock(std::string_view(span).substr(6, 5));
+      cl.shadowFrom = end(span.substr(0, dash));
+      cl.shadowTo = end(span.substr(dash + 1));
       if (cl.shadowTo < cl.shadowFrom)
         throw UsageError("--shadow-span ends before it starts: '" + span + "'");
       spanGiven = true;
@@ -183,6 +191,10 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
     throw UsageError("--shadow-span and --shadow-step make " +
                      std::to_string((cl.shadowTo - cl.shadowFrom) / cl.shadowStep + 1) +
                      " steps; at most 255 (the raw counts are one byte per pixel)");
+  if (cl.shadowHours && cl.shadowTo > cl.shadowFrom && cl.shadowStep > cl.shadowTo - cl.shadowFrom)
+    throw UsageError("--shadow-step " + std::to_string(cl.shadowStep) + " min is longer than the span's " +
+                     std::to_string(cl.shadowTo - cl.shadowFrom) +
+                     " min: its one step would count for more time than the span has");
   if (cl.shadowHours && cl.backend == Backend::Window)
     throw UsageError("--shadow-hours renders headless; it contradicts --backend window");
   if (cl.shadowHours && cl.frames)

@@ -236,3 +236,18 @@ TEST(CommandLine, VariantListIsOneLineAVariant) {
   i.variants[1] = {"with space", "help", {}};
   EXPECT_THROW(variantList(i), std::logic_error);
 }
+
+// --shadow-span as the pages write it (9:00-17:00) and zero-padded; a step longer than the span is
+// refused, since its one step would count for more time than the span has.
+TEST(CommandLine, ShadowSpanTakesHMmOrHhMm) {
+  const CommandLine a = parse({"--shadow-hours", "h.png", "--shadow-span", "9:00-17:30"});
+  EXPECT_EQ(a.shadowFrom, 9 * 60);
+  EXPECT_EQ(a.shadowTo, 17 * 60 + 30);
+  const CommandLine b =
+      parse({"--shadow-hours", "h.png", "--shadow-span", "06:20-19:40", "--shadow-step", "20"});
+  EXPECT_EQ(b.shadowFrom, 6 * 60 + 20);
+  EXPECT_EQ(b.shadowTo, 19 * 60 + 40);
+  EXPECT_THROW(parse({"--shadow-hours", "h.png", "--shadow-span", "900-1700"}), UsageError);
+  EXPECT_THROW(parse({"--shadow-hours", "h.png", "--shadow-span", "9:00-10:00", "--shadow-step", "61"}),
+               UsageError);
+}
