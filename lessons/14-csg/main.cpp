@@ -346,9 +346,15 @@ class Csg final : public Lesson {
     glEnable(GL_CULL_FACE);
     f.pass("parity");
 
-    // 3. Merge: the targets drawn into the frame where they are the trimmed surface (the shader
-    // compares with the work depth), the nearest of all products winning; the stencil records
-    // the primitive (its index modulo 255, + 1).
+    // 3. Merge: the targets drawn into the frame where they are the trimmed surface.
+    mergeIntoFrame(f, p, targets);
+    return true;
+  }
+
+  // Merge: the targets drawn into the frame where they are the trimmed surface (the shader
+  // compares with the work depth), the nearest of all products winning; the stencil records
+  // the primitive (its index modulo 255, + 1).
+  void mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets) {
     glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer());
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthFunc(GL_LESS);
@@ -364,7 +370,6 @@ class Csg final : public Lesson {
     glBindTexture(GL_TEXTURE_2D, 0);
     f.count("merge_passes");
     f.pass("merge");
-    return true;
   }
 
   // Lesson 13's count on the product's target faces: INCR on every fragment, the depth test
@@ -474,23 +479,9 @@ class Csg final : public Lesson {
       clipByIntersection(f, p);
       f.pass("intersect");
       // 4. Merge, as Goldfeather does.
-      glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer());
-      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-      glDepthFunc(GL_LESS);
-      glDepthMask(GL_TRUE);
-      glStencilMask(0xFF);
-      glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-      glActiveTexture(GL_TEXTURE0);
-      glBindTexture(GL_TEXTURE_2D, workDepth_);
       std::vector<int> targets = p.intersected;
       targets.insert(targets.end(), p.subtracted.begin(), p.subtracted.end());
-      for (int x : targets) {
-        glStencilFunc(GL_ALWAYS, x % 255 + 1, 0xFF);  // the primitive, modulo 255, for the oracle
-        drawTargets(p, {x}, Paint::Merged);
-      }
-      glBindTexture(GL_TEXTURE_2D, 0);
-      f.count("merge_passes");
-      f.pass("merge");
+      mergeIntoFrame(f, p, targets);
     }
   }
 
