@@ -174,6 +174,7 @@ TEST(RobustZFail, ABoundedLightAddsNothingBeyondItsRadiusAndShadesAsLesson16Does
   // turned off is the ambient picture.
   const std::string file = std::string(SCENES_DIR) + "/hard/light-radius-shades-nothing-beyond.scene";
   const auto dark = std::filesystem::temp_directory_path() / "stencil-15-robust-zfail" / "light-off.scene";
+  std::filesystem::create_directories(dark.parent_path());  // this test may run first
   {
     std::ifstream in(file);
     std::ofstream out(dark);
@@ -220,6 +221,7 @@ TEST(RobustZFail, ARoomIsLitFromInsideWhicheverWayItsFacesPoint) {
   const std::string box = std::string(SCENES_DIR) + "/hard/room-eye-inside-a-box.scene";
   const std::string inward = std::string(SCENES_DIR) + "/hard/room-faces-inward.scene";
   const auto dark = std::filesystem::temp_directory_path() / "stencil-15-robust-zfail" / "room-dark.scene";
+  std::filesystem::create_directories(dark.parent_path());  // this test may run first
   {  // the same room with light 0 off: what light 0 adds shows against it
     std::ifstream in(box);
     std::ofstream out(dark);
