@@ -583,7 +583,8 @@ void writeDualTable(const TableReporter& reporter, std::ofstream& out) {
       if (!reporter.rows.count("prepared-near" + key) || !reporter.rows.count("dual-still" + key) ||
           !reporter.rows.count("dual-prepare" + key))
         continue;
-      const double saved = perTriangle(reporter, "prepared-near" + key) - perTriangle(reporter, "dual-still" + key);
+      const double saved =
+          perTriangle(reporter, "prepared-near" + key) - perTriangle(reporter, "dual-still" + key);
       if (saved <= 0.0) continue;
       const double calls = perTriangle(reporter, "dual-prepare" + key) / saved;
       fewest = std::min(fewest, calls);
