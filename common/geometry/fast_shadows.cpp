@@ -36,6 +36,12 @@ std::vector<std::uint32_t> sideIndices(const Mesh& welded, const std::vector<Sil
   return indices;
 }
 
+std::vector<SilhouetteEdge> possibleSilhouetteEdges(const PreparedCaster& caster,
+                                                    const std::vector<bool>& lit) {
+  return caster.report.closedManifold() ? possibleSilhouetteEdges(caster.adjacency, lit)
+                                        : twoSidedSilhouetteEdges(caster.adjacency, lit);
+}
+
 std::vector<SilhouetteEdge> twoSidedSilhouetteEdges(const EdgeAdjacency& adjacency,
                                                     const std::vector<bool>& lit) {
   std::vector<SilhouetteEdge> edges;
@@ -296,75 +302,49 @@ BoundingSphere worldBounds(const BoundingSphere& local, const glm::mat4& model) 
   return {glm::vec3(model * glm::vec4(local.centre, 1.0f)), local.radius * scale};
 }
 
-std::vector<VolumeChoice> chooseVolumes(ShadowMethod method, const std::vector<BoundingSphere>& casters,
-                                        const glm::vec3& lightCentre, float radius, const Frustum& pyramid,
-                                        const Frustum& frustum) {
-  std::vector<VolumeChoice> choices(casters.size());
-  bool anyInPyramid = false;
-  for (std::size_t c = 0; c < casters.size(); ++c) {
-    if (!std::isinf(radius) && culledByLight(lightCentre, radius, casters[c].centre, casters[c].radius))
-      continue;
-    choices[c].shadowCase = shadowCase(pyramid, frustum, casters[c].centre, casters[c].radius);
-    anyInPyramid |= choices[c].shadowCase != 1;
-  }
-  // Full z-fail (both caps of every volume) for Everitt-Kilgard, and for Lengyel once any caster
-  // is in the pyramid; z-pass only never.
-  const bool everittKilgard =
+Recipe recipeFor(ShadowMethod method, int shadowCase, bool anyInPyramid, bool lightCapInCase3,
+                 bool directional) {
+  const bool fullCaps =
       method == ShadowMethod::EverittKilgard || (method == ShadowMethod::Lengyel && anyInPyramid);
-  for (VolumeChoice& choice : choices) {
-    if (choice.shadowCase == 0) continue;
-    choice.zfail = method == ShadowMethod::McGuire ? choice.shadowCase != 1 : everittKilgard;
-    choice.fullCaps = everittKilgard;
-  }
-  return choices;
+  Recipe r;
+  r.zfail = method == ShadowMethod::McGuire ? shadowCase != 1 : fullCaps;
+  if (r.zfail && !directional) r.darkCap = fullCaps ? DarkCapKind::BackFaces : DarkCapKind::Fan;
+  r.lightCap = r.zfail && (fullCaps || (shadowCase == 3 && lightCapInCase3));
+  return r;
 }
 
-VolumeIndices casterVolume(const PreparedCaster& caster, const glm::vec4& light, const VolumeChoice& choice,
-                           bool lightCapOn, bool splitFan, const std::vector<bool>* litFaces,
-                           const std::vector<SilhouetteEdge>* silhouette) {
+VolumeIndices volumeOf(const PreparedCaster& caster, const glm::vec4& light, const Recipe& recipe,
+                       const std::vector<bool>& lit, const std::vector<SilhouetteEdge>& edges,
+                       bool splitFan) {
+  const Mesh& mesh = caster.mesh;
+  const bool twoSided = !caster.report.closedManifold();  // an open mesh: a volume from each side
   VolumeIndices out;
   CasterVolume& v = out.volume;
-  v.shadowCase = choice.shadowCase;
-  v.zfail = choice.zfail;
-  const Mesh& mesh = caster.mesh;
-  const std::vector<bool> lit = litFaces ? *litFaces : facesLight(mesh, light);
-  // An open mesh (a scene file's) blocks light with both sides of its faces: two volumes.
-  const bool twoSided = !caster.report.closedManifold();
-  const std::vector<SilhouetteEdge> edges = twoSided ? twoSidedSilhouetteEdges(caster.adjacency, lit)
-                                            : silhouette && !litFaces
-                                                ? *silhouette
-                                                : possibleSilhouetteEdges(caster.adjacency, lit);
-  const bool directional = light.w == 0.0f;
-  const bool fullCaps = choice.fullCaps;
-  std::vector<std::uint32_t>& indices = out.indices;
-  indices = sideIndices(mesh, edges, directional);
-  v.sides = indices.size();
-  const bool lightCap = v.zfail && (fullCaps || (v.shadowCase == 3 && lightCapOn));
-  // The lit faces: the light cap, and what the fan's test for an enclosed light needs.
-  std::vector<std::uint32_t> cap;
-  if (lightCap || (v.zfail && !directional && !fullCaps)) cap = lightCapIndices(mesh, lit, twoSided);
-  if (v.zfail && !directional) {  // a directional light's far ends are one point: no dark cap
-    std::vector<std::uint32_t> dark;
-    if (fullCaps) {
-      dark = litFaces ? pieceDarkCapIndices(mesh, lit) : backFaceDarkCapIndices(mesh, lit, twoSided);
-    } else {
-      const glm::vec3 point = glm::vec3(light) / light.w;
-      DarkCap fan = fanDarkCap(mesh, edges, point, splitFan ? 179.0f : 361.0f);
-      // The fan is a whole sky off when it and the caster enclose the light (CPU work: O(f)).
-      v.spheres = std::abs(closeAroundLight(fan, mesh, cap, point));
-      dark = fan.indices;
-      out.split = fan.split;
-      v.splitTriangles = fan.splitTriangles;
-      v.splitVertices = out.split.size();
-    }
-    indices.insert(indices.end(), dark.begin(), dark.end());
-    v.darkCap = dark.size();
+  v.zfail = recipe.zfail;
+  out.indices = sideIndices(mesh, edges, light.w == 0.0f);
+  v.sides = out.indices.size();
+  // The light cap is the lit faces as they are; the fan reads them too, to find a light that the
+  // fan and the caster enclose together.
+  std::vector<std::uint32_t> lightCap, darkCap;
+  if (recipe.lightCap || recipe.darkCap == DarkCapKind::Fan) lightCap = lightCapIndices(mesh, lit, twoSided);
+  if (recipe.darkCap == DarkCapKind::Fan) {  // one triangle per silhouette edge
+    const glm::vec3 point = glm::vec3(light) / light.w;
+    DarkCap fan = fanDarkCap(mesh, edges, point, splitFan ? 179.0f : 361.0f);
+    v.spheres = std::abs(closeAroundLight(fan, mesh, lightCap, point));  // CPU work, O(f)
+    darkCap = fan.indices;
+    out.split = fan.split;
+    v.splitTriangles = fan.splitTriangles;
+    v.splitVertices = out.split.size();
+  } else if (recipe.darkCap == DarkCapKind::BackFaces) {
+    darkCap = backFaceDarkCapIndices(mesh, lit, twoSided);
+  } else if (recipe.darkCap == DarkCapKind::Piece) {
+    darkCap = pieceDarkCapIndices(mesh, lit);
   }
-  if (lightCap) {
-    indices.insert(indices.end(), cap.begin(), cap.end());
-    v.lightCap = cap.size();
-  }
-  for (const SilhouetteEdge& e : edges) indices.insert(indices.end(), {e.v0, e.v1});
+  out.indices.insert(out.indices.end(), darkCap.begin(), darkCap.end());
+  v.darkCap = darkCap.size();
+  if (recipe.lightCap) out.indices.insert(out.indices.end(), lightCap.begin(), lightCap.end());
+  v.lightCap = recipe.lightCap ? lightCap.size() : 0;
+  for (const SilhouetteEdge& e : edges) out.indices.insert(out.indices.end(), {e.v0, e.v1});
   v.silhouette = 2 * edges.size();
   return out;
 }
@@ -379,6 +359,17 @@ LightClip lightClip(const glm::vec4& light, float radius, bool bounds, const glm
   clip.depthBounds = !std::isinf(clip.radius);
   if (clip.depthBounds) clip.depth = lightDepthBounds(clip.centre, clip.radius, view, projection);
   return clip;
+}
+
+std::vector<int> shadowCases(const std::vector<BoundingSphere>& casters, const LightClip& clip,
+                             const Frustum& pyramid, const Frustum& frustum) {
+  std::vector<int> cases;
+  for (const BoundingSphere& c : casters) {
+    const bool culled =
+        !std::isinf(clip.radius) && culledByLight(clip.centre, clip.radius, c.centre, c.radius);
+    cases.push_back(culled ? 0 : shadowCase(pyramid, frustum, c.centre, c.radius));
+  }
+  return cases;
 }
 
 }  // namespace stencil

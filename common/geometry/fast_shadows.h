@@ -44,6 +44,11 @@ std::vector<std::uint32_t> sideIndices(const Mesh& welded, const std::vector<Sil
 std::vector<SilhouetteEdge> twoSidedSilhouetteEdges(const EdgeAdjacency& adjacency,
                                                     const std::vector<bool>& lit);
 
+// A caster's possible silhouette edges for its lit faces (facesLight, or a piece of them): over
+// its adjacency when it is a closed manifold, twoSidedSilhouetteEdges when it is open.
+std::vector<SilhouetteEdge> possibleSilhouetteEdges(const PreparedCaster& caster,
+                                                    const std::vector<bool>& lit);
+
 // The light cap: the faces towards the light, as they are (w = 1 copies). twoSided (an open
 // mesh): the faces away from the light too, turned round.
 std::vector<std::uint32_t> lightCapIndices(const Mesh& welded, const std::vector<bool>& lit,
@@ -52,12 +57,12 @@ std::vector<std::uint32_t> lightCapIndices(const Mesh& welded, const std::vector
 // Everitt and Kilgard's dark cap: the faces away from the light, pushed to infinity (w = 0
 // copies) with their winding, so the cap faces away from the light. O(f) triangles. twoSided:
 // the faces towards the light too, pushed to infinity and turned round.
+std::vector<std::uint32_t> backFaceDarkCapIndices(const Mesh& welded, const std::vector<bool>& lit,
+                                                  bool twoSided = false);
+
 // The dark cap of a piece of a light cap (litFacePieces): the piece's own faces pushed to
 // infinity and turned round, which close the piece's sides whatever the rest of the caster does.
 std::vector<std::uint32_t> pieceDarkCapIndices(const Mesh& welded, const std::vector<bool>& lit);
-
-std::vector<std::uint32_t> backFaceDarkCapIndices(const Mesh& welded, const std::vector<bool>& lit,
-                                                  bool twoSided = false);
 
 // The angle the three directions span: the diameter, in degrees, of the smallest spherical cap
 // that holds them. 180 when no open hemisphere holds them (they are coplanar with the origin and
@@ -153,21 +158,34 @@ BoundingSphere worldBounds(const BoundingSphere& local, const glm::mat4& model);
 //   ZPass         z-pass for every caster, which fails with the eye in a shadow.
 enum class ShadowMethod { McGuire = 0, EverittKilgard = 1, Lengyel = 2, ZPass = 3 };
 
-// What one caster's volume is for one light: its case, z-pass or z-fail and which caps.
-struct VolumeChoice {
-  int shadowCase = 0;     // 1, 2 or 3 from the pyramid; 0 culled by the light's bounds
-  bool zfail = false;     // counted behind the scene, the volume closed at both ends
-  bool fullCaps = false;  // Everitt and Kilgard's caps (O(f)) rather than the fan and per-case cap
+// The dark cap a z-fail volume is closed with at infinity.
+enum class DarkCapKind {
+  None,       // z-pass, or a directional light: the sides meet at one point at infinity
+  Fan,        // McGuire et al.'s, O(s): a fan over the silhouette at infinity (fanDarkCap)
+  BackFaces,  // Everitt and Kilgard's, O(f): the faces away from the light at infinity
+  Piece,      // one piece of the light cap pushed to infinity and turned round (pieceDarkCapIndices)
 };
 
-// The choice for every caster of one light, from their world bounding spheres. lightCentre and
-// radius are the light's bounds (radius infinite: unbounded, nothing culled). Lengyel's choice
-// needs every caster's case first: one in the pyramid turns all of them to full z-fail.
-std::vector<VolumeChoice> chooseVolumes(ShadowMethod method, const std::vector<BoundingSphere>& casters,
-                                        const glm::vec3& lightCentre, float radius, const Frustum& pyramid,
-                                        const Frustum& frustum);
+// What one caster's volume is for one light: counted in front of the scene or behind it, and
+// which caps close it.
+struct Recipe {
+  bool zfail = false;  // counted behind the scene; else in front of it (z-pass)
+  DarkCapKind darkCap = DarkCapKind::None;
+  bool lightCap = false;
+};
 
-// What one caster draws for one light, as ranges of its index list (casterVolume).
+// The one place a method and a caster's case (1, 2 or 3; not 0) become a recipe:
+//   McGuire          1 z-pass, the sides alone; 2 z-fail with the fan; 3 the same and the light
+//                    cap (lightCapInCase3 false leaves it out, to show the count go wrong);
+//   EverittKilgard   z-fail with both full caps, whatever the case;
+//   Lengyel          z-pass while no caster of the light meets the occlusion pyramid
+//                    (anyInPyramid: some case above 1), else as EverittKilgard;
+//   ZPass            z-pass, which fails with the eye in a shadow.
+// A directional light's z-fail volume needs no dark cap: its sides meet at one point.
+Recipe recipeFor(ShadowMethod method, int shadowCase, bool anyInPyramid, bool lightCapInCase3,
+                 bool directional);
+
+// What one caster draws for one light, as ranges of its index list (volumeOf).
 struct CasterVolume {
   int shadowCase = 0;  // 1, 2 or 3 from the pyramid; 0 culled
   bool zfail = false;
@@ -176,27 +194,23 @@ struct CasterVolume {
   int spheres = 0;                                    // whole spheres added to the fan
 };
 
-// One caster's volume for a light in the caster's own space, as indices into its
-// doubledVertexArray: sides, dark cap and light cap one after the other, then its silhouette as
-// lines; the split dark-cap triangles (and any spheres closeAroundLight adds) as vertices.
-// lightCap: draw the light cap of a case-3 caster (McGuire); splitFan: split fan triangles that
-// span 180 degrees or more. An open mesh blocks light with both sides of its faces: two volumes.
+// One caster's volume as indices into its doubledVertexArray, with the dark cap's split
+// triangles (and any spheres closeAroundLight adds) as vertices of their own.
 struct VolumeIndices {
-  CasterVolume volume;
+  CasterVolume volume;  // shadowCase left 0 for the caller
   std::vector<std::uint32_t> indices;
   std::vector<glm::vec4> split;
 };
-// litFaces: the faces to take as facing the light instead of all that do (one piece of a closed
-// caster's light cap, shadow_volume.h's litFacePieces), with a full-caps z-fail choice: its dark
-// cap is then the piece pushed away (pieceDarkCapIndices), O(piece) rather than O(caster).
-// silhouette: the possible silhouette edges for this light found beforehand (a SilhouetteCaster's
-// passes or DualSilhouettes' query, both the list possibleSilhouetteEdges(adjacency, lit) gives), used
-// for a closed caster's whole volume in place of the brute force over its adjacency; an open
-// caster (two volumes) and a piece find their own.
-VolumeIndices casterVolume(const PreparedCaster& caster, const glm::vec4& light, const VolumeChoice& choice,
-                           bool lightCap = true, bool splitFan = true,
-                           const std::vector<bool>* litFaces = nullptr,
-                           const std::vector<SilhouetteEdge>* silhouette = nullptr);
+
+// One caster's volume for a light in the caster's own space, built as the recipe says: the
+// sides, the dark cap and the light cap one after the other, then the silhouette as lines (for
+// an overlay). lit: the faces taken as facing the light (facesLight's, or one piece of them,
+// shadow_volume.h's litFacePieces, with DarkCapKind::Piece); edges: the possible silhouette
+// edges between them (an open caster's both ways, possibleSilhouetteEdges(PreparedCaster, lit)).
+// splitFan: split fan triangles that span 180 degrees or more (McGuire et al. section 5).
+VolumeIndices volumeOf(const PreparedCaster& caster, const glm::vec4& light, const Recipe& recipe,
+                       const std::vector<bool>& lit, const std::vector<SilhouetteEdge>& edges,
+                       bool splitFan = true);
 
 // A light's bounds for one view: the sphere (radius infinite for a directional light or with
 // bounds off), its scissor rectangle (the whole window when unbounded; empty when off screen)
@@ -211,5 +225,11 @@ struct LightClip {
 };
 LightClip lightClip(const glm::vec4& light, float radius, bool bounds, const glm::mat4& view,
                     const glm::mat4& projection, glm::ivec2 size);
+
+// Every caster's case for one light, from their world bounding spheres: shadowCase's 1, 2 or 3,
+// or 0 where the light's bounds (clip.centre, clip.radius; an infinite radius culls nothing)
+// miss the caster (culledByLight).
+std::vector<int> shadowCases(const std::vector<BoundingSphere>& casters, const LightClip& clip,
+                             const Frustum& pyramid, const Frustum& frustum);
 
 }  // namespace stencil

@@ -1,6 +1,6 @@
 // One shadow caster on the GPU for McGuire et al.'s volumes (geometry/fast_shadows.h): its
 // doubled vertex array (static), an index buffer rewritten per light (sides, dark cap, light cap
-// and silhouette lines one after the other, as casterVolume lists them), and the few split
+// and silhouette lines one after the other, as volumeOf lists them), and the few split
 // dark-cap triangles as vertices. Attribute 0 is a vec4, for shaders/common/extrude.vert.
 #pragma once
 #include <cstdint>

@@ -85,4 +85,8 @@ void GpuVertexStream::draw(GLint first, GLsizei count) const {
   countDraw(mode_ == GL_TRIANGLES ? static_cast<std::uint64_t>(count / 3) : 0);
 }
 
+WindowRectangle::WindowRectangle() {
+  upload({{-1, -1, 0, 1}, {1, -1, 0, 1}, {1, 1, 0, 1}, {-1, -1, 0, 1}, {1, 1, 0, 1}, {-1, 1, 0, 1}});
+}
+
 }  // namespace stencil

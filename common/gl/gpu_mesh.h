@@ -60,6 +60,12 @@ struct GpuTriangles : GpuVertexStream {
   GpuTriangles() : GpuVertexStream(GL_TRIANGLES) {}
 };
 
+// The whole window as two triangles in clip space (z = 0, w = 1), for a pass that touches every
+// pixel the scissor lets through: drawn with an identity transform.
+struct WindowRectangle : GpuTriangles {
+  WindowRectangle();
+};
+
 // Two vertices per segment.
 struct GpuLines : GpuVertexStream {
   GpuLines() : GpuVertexStream(GL_LINES) {}

@@ -102,8 +102,6 @@ class SoftShadows final : public Lesson {
         ball_(ballMesh_),
         slabEdges_(prepareCaster(transformed(slabMesh_, slabModel()))),
         ballEdges_(prepareCaster(transformed(ballMesh_, glm::translate(glm::mat4(1.0f), kBallCentre)))) {
-    window_.upload(
-        {{-1, -1, 0, 1}, {1, -1, 0, 1}, {1, 1, 0, 1}, {-1, -1, 0, 1}, {1, 1, 0, 1}, {-1, 1, 0, 1}});
     glGenTextures(1, &lightsTexture_);
   }
   ~SoftShadows() override { glDeleteTextures(1, &lightsTexture_); }
@@ -737,7 +735,8 @@ class SoftShadows final : public Lesson {
   Mesh groundMesh_, matMesh_, slabMesh_, ballMesh_;
   GpuMesh ground_, mat_, slab_, ball_;
   PreparedCaster slabEdges_, ballEdges_;  // welded, in world space (the scene stands still)
-  GpuTriangles volumeStream_, window_;
+  GpuTriangles volumeStream_;
+  WindowRectangle window_;
   std::unique_ptr<Target> target_, saved_, average_;
   GLuint framework_ = 0;
   glm::ivec2 size_{0};

@@ -282,17 +282,21 @@ class DepthComplexity final : public Lesson {
         glDepthBoundsEXT(clip.depth.nearest, clip.depth.farthest);  // the depths the sphere spans
         f.count("depth_bounds_used");
       }
-      const std::vector<VolumeChoice> choices = chooseVolumes(
-          method, world, clip.centre, clip.radius, occlusionPyramid(nearRect, light.position), frustum);
+      const std::vector<int> cases =
+          shadowCases(world, clip, occlusionPyramid(nearRect, light.position), frustum);
+      const bool anyInPyramid = std::any_of(cases.begin(), cases.end(), [](int c) { return c > 1; });
       for (std::size_t c = 0; c < casters_.size(); ++c) {
-        if (choices[c].shadowCase == 0) {
+        if (cases[c] == 0) {
           f.count("casters_culled");
           continue;
         }
         const SceneObject& o = scene_.objects[casters_[c].object];
         const glm::mat4 model = o.modelAt(f.time);
         const glm::vec4 local = glm::inverse(model) * light.position;  // the light in the caster's space
-        const VolumeIndices built = casterVolume(o.caster, local, choices[c]);
+        const std::vector<bool> lit = facesLight(o.caster.mesh, local);
+        const VolumeIndices built =
+            volumeOf(o.caster, local, recipeFor(method, cases[c], anyInPyramid, true, local.w == 0.0f), lit,
+                     possibleSilhouetteEdges(o.caster, lit));
         const CasterVolume& v = built.volume;
         if (v.zfail) f.count("casters_zfail");
         f.count("volume_triangles", (v.sides + v.darkCap + v.lightCap + v.splitVertices) / 3);

@@ -79,8 +79,6 @@ class RobustZFail final : public Lesson {
       convex_.push_back(closed && isConvex(o.caster.mesh, o.caster.adjacency));
       casterBounds_.push_back(closed ? boundingSphereOf(o.caster.mesh.positions) : BoundingSphere{});
     }
-    window_.upload(
-        {{-1, -1, 0, 1}, {1, -1, 0, 1}, {1, 1, 0, 1}, {-1, -1, 0, 1}, {1, 1, 0, 1}, {-1, 1, 0, 1}});
   }
 
   void render(Frame& f) override {
@@ -417,7 +415,7 @@ class RobustZFail final : public Lesson {
   std::vector<std::vector<VolumePiece>> pieces_;        // per light
   std::vector<bool> convex_;                            // per object: a convex caster nests once
   std::vector<BoundingSphere> casterBounds_;            // per object, object space
-  GpuTriangles window_;                                 // the whole window, for folding the count
+  WindowRectangle window_;                              // the whole window, for folding the count
   std::vector<std::unique_ptr<GpuTriangles>> volumes_;  // per light, per object (empty for non-casters)
   std::vector<glm::mat4> volumeModels_;
   GpuLines silhouettes_;

@@ -48,13 +48,13 @@
 #include <memory>
 #include <string>
 
+#include "classroom.h"
 #include "geometry/bounds.h"
 #include "geometry/dual_silhouette.h"
 #include "geometry/fast_shadows.h"
 #include "geometry/projection.h"
 #include "geometry/scene.h"
 #include "geometry/shadow_volume.h"
-#include "geometry/shapes.h"
 #include "gl/accumulation_target.h"
 #include "gl/doubled_caster.h"
 #include "gl/errors.h"
@@ -64,10 +64,9 @@
 #include "gl/shader.h"
 
 using namespace stencil;
+using namespace stencil::fast_robust_shadows;  // classroom.h: the options, the built-in scene, overlays
 
 namespace {
-
-Scene builtInScene(int slices, bool many, bool moving);  // with the options, after the lesson
 
 // ---- 1. the doubled vertex array --------------------------------------------------------------
 
@@ -93,8 +92,7 @@ struct Caster {
 // kinds twice.
 std::vector<SilhouetteEdge> possibleSilhouette(Caster& c, const PreparedCaster& p, const glm::vec4& light,
                                                const std::vector<bool>& lit, int how) {
-  if (!p.report.closedManifold()) return twoSidedSilhouetteEdges(p.adjacency, lit);
-  if (how == 0) return possibleSilhouetteEdges(p.adjacency, lit);
+  if (!p.report.closedManifold() || how == 0) return possibleSilhouetteEdges(p, lit);
   if (!c.streaming) c.streaming = std::make_unique<SilhouetteCaster>(prepareSilhouettes(p.mesh, p.adjacency));
   if (how == 1) return possibleSilhouetteEdges(*c.streaming, light);
   if (!c.dual) c.dual = std::make_unique<DualSilhouettes>(*c.streaming);
@@ -103,79 +101,11 @@ std::vector<SilhouetteEdge> possibleSilhouette(Caster& c, const PreparedCaster& 
   return edges;
 }
 
-// ---- 3. the case, and what it asks of the volume ----------------------------------------------
-
-enum class DarkCapKind {
-  None,       // z-pass, or a directional light: the sides meet at one point at infinity
-  Fan,        // McGuire et al.'s, O(s): a fan over the silhouette at infinity
-  BackFaces,  // Everitt and Kilgard's, O(f): the faces away from the light at infinity
-  Piece,      // one piece of the light cap, pushed to infinity and turned round
-};
-struct Recipe {
-  bool zfail = false;  // counted behind the scene; else in front of it (z-pass)
-  DarkCapKind darkCap = DarkCapKind::None;
-  bool lightCap = false;
-};
-
-// What one caster's volume is for one light, from the method and the caster's case (1 misses the
-// occlusion pyramid; 2 meets it off screen; 3 meets it and may be seen):
-//   McGuire          1 z-pass, the sides alone; 2 z-fail with the fan; 3 the same and the light
-//                    cap (lightCapOption off leaves it out, to show the count go wrong);
-//   EverittKilgard   z-fail with both full caps, whatever the case;
-//   Lengyel          z-pass while no caster meets the pyramid (anyInPyramid), else as EverittKilgard;
-//   ZPass            z-pass, which fails with the eye in a shadow.
-Recipe recipeFor(ShadowMethod method, int shadowCase, bool anyInPyramid, bool lightCapOption,
-                 bool directional) {
-  const bool fullCaps =
-      method == ShadowMethod::EverittKilgard || (method == ShadowMethod::Lengyel && anyInPyramid);
-  Recipe r;
-  r.zfail = method == ShadowMethod::McGuire ? shadowCase != 1 : fullCaps;
-  if (r.zfail && !directional) r.darkCap = fullCaps ? DarkCapKind::BackFaces : DarkCapKind::Fan;
-  r.lightCap = r.zfail && (fullCaps || (shadowCase == 3 && lightCapOption));
-  return r;
-}
-
-// ---- 4 and 5. the fan dark cap and the light cap: one caster's volume ------------------------
-
-// One caster's volume for a light in its space, as indices into its doubled vertex array: the
-// sides, the dark cap and the light cap one after the other, then the silhouette as lines (for
-// the overlay); split fan triangles, and whole spheres closeAroundLight adds, as vertices.
-// lit: the faces taken as facing the light (all that do, or one piece); edges: between them.
-VolumeIndices volumeOf(const PreparedCaster& p, const glm::vec4& light, const Recipe& recipe,
-                       const std::vector<bool>& lit, const std::vector<SilhouetteEdge>& edges,
-                       bool splitFan) {
-  const Mesh& mesh = p.mesh;
-  const bool twoSided = !p.report.closedManifold();  // an open mesh: a volume from each side of its faces
-  VolumeIndices out;
-  CasterVolume& v = out.volume;
-  v.zfail = recipe.zfail;
-  out.indices = sideIndices(mesh, edges, light.w == 0.0f);
-  v.sides = out.indices.size();
-  // 5. The light cap, the lit faces as they are; the fan reads them too, to find a light that the
-  // fan and the caster enclose together.
-  std::vector<std::uint32_t> lightCap, darkCap;
-  if (recipe.lightCap || recipe.darkCap == DarkCapKind::Fan) lightCap = lightCapIndices(mesh, lit, twoSided);
-  if (recipe.darkCap == DarkCapKind::Fan) {  // 4. one triangle per silhouette edge
-    const glm::vec3 point = glm::vec3(light) / light.w;
-    DarkCap fan = fanDarkCap(mesh, edges, point, splitFan ? 179.0f : 361.0f);
-    v.spheres = std::abs(closeAroundLight(fan, mesh, lightCap, point));  // CPU work, O(f)
-    darkCap = fan.indices;
-    out.split = fan.split;
-    v.splitTriangles = fan.splitTriangles;
-    v.splitVertices = out.split.size();
-  } else if (recipe.darkCap == DarkCapKind::BackFaces) {
-    darkCap = backFaceDarkCapIndices(mesh, lit, twoSided);
-  } else if (recipe.darkCap == DarkCapKind::Piece) {
-    darkCap = pieceDarkCapIndices(mesh, lit);
-  }
-  out.indices.insert(out.indices.end(), darkCap.begin(), darkCap.end());
-  v.darkCap = darkCap.size();
-  if (recipe.lightCap) out.indices.insert(out.indices.end(), lightCap.begin(), lightCap.end());
-  v.lightCap = recipe.lightCap ? lightCap.size() : 0;
-  for (const SilhouetteEdge& e : edges) out.indices.insert(out.indices.end(), {e.v0, e.v1});
-  v.silhouette = 2 * edges.size();
-  return out;
-}
+// ---- 3, 4 and 5. the case, and the volume it asks for -----------------------------------------
+// In geometry/fast_shadows.h, GL-free, shared with lesson 13: shadowCases (each caster's case from
+// the occlusion pyramid, 0 culled by the light's bounds), recipeFor (the one function from a
+// method and a case to z-pass or z-fail, which dark cap, whether a light cap) and volumeOf (the
+// sides, the fan dark cap and the light cap as indices into the doubled vertex array).
 
 // ---- 7. the rendering system (section 8), with 6. the light's bounds --------------------------
 
@@ -184,8 +114,6 @@ class FastRobustShadows final : public Lesson {
   explicit FastRobustShadows(const Scene* fromFile)
       : extrude_("common/extrude.vert", "common/flat.frag"), flat_("common/flat.vert", "common/flat.frag") {
     if (fromFile) setScene(*fromFile);
-    window_.upload(
-        {{-1, -1, 0, 1}, {1, -1, 0, 1}, {1, 1, 0, 1}, {-1, -1, 0, 1}, {1, 1, 0, 1}, {-1, 1, 0, 1}});
   }
 
   void render(Frame& f) override {
@@ -295,11 +223,11 @@ class FastRobustShadows final : public Lesson {
 
     // ---- the classroom's view: cases, volumes, silhouettes of the light drawn last ------------
     if (f.option("stretch") > 0) {  // in the accumulation target, before RGBA16F is clamped to 8 bits
-      stretchContrast(f.option("stretch"));
+      stretchContrast(flat_, window_, f.option("stretch"));
       target_->copyTo(framework_);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, framework_);
-    if (f.on("tint")) tintShadow();
+    if (f.on("tint")) tintShadow(flat_, window_);
     if (f.on("show")) drawOverlay(f);
     glDisable(GL_CULL_FACE);
     glFrontFace(GL_CCW);  // GL's default again
@@ -320,15 +248,10 @@ class FastRobustShadows final : public Lesson {
   void buildVolumes(Frame& f, const glm::vec4& light, const LightClip& clip, const Frustum& pyramid,
                     const Frustum& frustum) {
     // 3. Each caster's case, 0 where it misses the light's bounds; Lengyel's choice needs them all.
-    std::vector<int> cases;
-    bool anyInPyramid = false;
-    for (const Caster& c : casters_) {
-      const BoundingSphere w = worldBounds(c.bounds, meshes_.models()[c.object]);
-      const bool culled =
-          !std::isinf(clip.radius) && culledByLight(clip.centre, clip.radius, w.centre, w.radius);
-      cases.push_back(culled ? 0 : shadowCase(pyramid, frustum, w.centre, w.radius));
-      anyInPyramid |= cases.back() > 1;
-    }
+    std::vector<BoundingSphere> world;
+    for (const Caster& c : casters_) world.push_back(worldBounds(c.bounds, meshes_.models()[c.object]));
+    const std::vector<int> cases = shadowCases(world, clip, pyramid, frustum);
+    const bool anyInPyramid = std::any_of(cases.begin(), cases.end(), [](int c) { return c > 1; });
     const auto method = static_cast<ShadowMethod>(f.option("method"));
     lightVolumes_.clear();
     for (std::size_t c = 0; c < casters_.size(); ++c) {
@@ -523,44 +446,6 @@ class FastRobustShadows final : public Lesson {
 
   // ---- the classroom's view --------------------------------------------------------------------
 
-  // The light sum doubled `times` times in the accumulation target, which is bound: a rectangle
-  // over the window blended as destination * 1 + destination. Levels 8 bits would round to
-  // 1/255 apart come out 2^times levels apart once shown, where the eye can tell them.
-  void stretchContrast(int times) {
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_STENCIL_TEST);
-    glDisable(GL_CULL_FACE);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_DST_COLOR, GL_ONE);
-    flat_.set("transform", glm::mat4(1.0f));  // the rectangle is in clip space already
-    flat_.set("colour", glm::vec4(1.0f));
-    for (int i = 0; i < times; ++i) window_.draw();
-    glDisable(GL_BLEND);
-    glEnable(GL_DEPTH_TEST);
-  }
-
-  // Where the stencil the frame ends with is not 0 (the light drawn last is blocked), a blue
-  // tint: a count that goes wrong shows as tint where the picture should have none, or none
-  // where it should. Tests the stencil, writes only colour.
-  void tintShadow() {
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_STENCIL_TEST);
-    glStencilMask(0x00);
-    glStencilFunc(GL_NOTEQUAL, 0, 0xFF);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    flat_.set("transform", glm::mat4(1.0f));
-    flat_.set("colour", glm::vec4(0.2f, 0.45f, 1.0f, 0.35f));
-    window_.draw();
-    glDisable(GL_BLEND);
-    glStencilMask(0xFF);
-    glDisable(GL_STENCIL_TEST);
-    glEnable(GL_DEPTH_TEST);
-  }
-
   // The casters coloured by their case for the light drawn last (grey culled, green 1, amber 2,
   // red 3), their volumes translucent in the same colour, their silhouettes as lines.
   void drawOverlay(const Frame& f) {
@@ -689,203 +574,10 @@ class FastRobustShadows final : public Lesson {
   SolidsSeen solids_;  // this frame's rooms
   std::vector<Caster> casters_;
   std::vector<LightVolume> lightVolumes_;  // the current light's
-  GpuTriangles window_;                    // the whole window, for folding the count and the overlays
+  WindowRectangle window_;                 // the whole window, for folding the count and the overlays
   std::unique_ptr<AccumulationTarget> target_;
   GLuint framework_ = 0;
 };
-
-// ---- the lesson's scene, cameras, options and variants ----------------------------------------
-
-constexpr int kManyLights = 32;
-// The ambient light, in hundredths, of the views from inside the sphere's shadow: there the warm
-// light is behind the sphere, and at the scene's 0.12 most of the picture is near black.
-constexpr int kShadowAmbient = 40;
-// Objects on the ground stand a little into it: a silhouette edge lying in the ground's plane
-// would extrude into a side face coplanar with the ground there, whose depth test is a toss-up.
-constexpr float kSunk = 0.01f;
-
-// In the spirit of the paper's figures: stairs, a grid of cubes, a sphere, two moving casters,
-// coloured attenuated point lights with finite bounds and one directional light.
-Scene builtInScene(int slices, bool many, bool moving) {
-  using glm::translate;
-  const glm::mat4 id(1.0f);
-  Scene s;
-  s.ambient = glm::vec3(0.12f);
-  s.objects.push_back(sceneObject("ground", makePlane(7.0f, 1), id, {0.75f, 0.74f, 0.7f}, false));
-  s.objects.push_back(
-      sceneObject("stairs", makeStairs(6, 2.2f, 0.3f, 0.45f),
-                  glm::rotate(translate(id, {-3.2f, 0.9f - kSunk, 0.25f}), glm::radians(90.0f), {0, 1, 0}),
-                  {0.7f, 0.6f, 0.5f}));
-  for (int i = 0; i < 9; ++i) {
-    const float column = static_cast<float>(i % 3), row = static_cast<float>(i / 3),
-                shade = 0.07f * static_cast<float>(i);
-    s.objects.push_back(sceneObject("cube-" + std::to_string(i), makeCube(0.28f),
-                                    translate(id, {1.0f + column, 0.28f - kSunk, -2.6f + row}),
-                                    {0.35f + shade, 0.5f, 0.85f - shade}));
-  }
-  s.objects.push_back(sceneObject("sphere", makeSphere(0.7f, slices, std::max(2, slices / 2)),
-                                  translate(id, {-0.4f, 1.3f, 1.2f}), {0.85f, 0.35f, 0.3f}));
-  if (moving) {
-    SceneObject torus = sceneObject("torus", makeTorus(0.5f, 0.16f, 32, 12),
-                                    translate(id, {2.0f, 2.1f, -1.6f}), {0.9f, 0.75f, 0.3f});
-    torus.spinAxis = glm::normalize(glm::vec3(1, 0, 0.4f));
-    torus.spinDegPerSecond = 25.0f;
-    torus.bob = 0.3f;
-    s.objects.push_back(torus);
-    SceneObject spinner =
-        sceneObject("spinner", makeCube(0.3f), translate(id, {-1.2f, 2.6f, -1.4f}), {0.5f, 0.8f, 0.55f});
-    spinner.spinAxis = glm::normalize(glm::vec3(1, 1, 0));
-    spinner.spinDegPerSecond = 40.0f;
-    s.objects.push_back(spinner);
-  }
-  if (many) {  // a ring of dim lights: each adds little, the sum is what the eye sees
-    for (int i = 0; i < kManyLights; ++i) {
-      const float a = glm::two_pi<float>() * static_cast<float>(i) / kManyLights;
-      const glm::vec3 hue = 0.5f + 0.5f * glm::vec3(std::cos(a), std::cos(a + 2.1f), std::cos(a + 4.2f));
-      s.lights.push_back({glm::vec4(4.0f * std::cos(a), 3.5f, 4.0f * std::sin(a), 1.0f), 0.06f * hue, 9.0f});
-    }
-  } else {
-    s.lights.push_back({{-2.0f, 4.6f, 2.4f, 1.0f}, {1.0f, 0.78f, 0.55f}, 10.0f});    // warm, above the sphere
-    s.lights.push_back({{3.2f, 3.2f, -0.4f, 1.0f}, {0.45f, 0.6f, 1.0f}, 5.5f});      // blue, over the cubes
-    s.lights.push_back({{-3.0f, 2.8f, -2.6f, 1.0f}, {0.5f, 1.0f, 0.55f}, 4.5f});     // green, small bounds
-    s.lights.push_back({{0.4f, 1.0f, 0.5f, 0.0f}, {0.3f, 0.3f, 0.32f}, kInfinity});  // directional
-  }
-  return s;
-}
-
-// A camera at `eye` looking at `target`, the far plane at infinity.
-OrbitCamera lookingFrom(glm::vec3 eye, glm::vec3 target) {
-  SceneCamera c;
-  c.eye = eye;
-  c.target = target;
-  c.fovyDeg = 70.0f;
-  return orbitCameraOf(c);
-}
-
-// Where the eye sits in the sphere's shadow from the warm light: on the line from the light
-// through the sphere's centre, past the sphere, a little above the ground.
-glm::vec3 underTheSphere() {
-  const glm::vec3 light(-2.0f, 4.6f, 2.4f), sphere(-0.4f, 1.3f, 1.2f);
-  return light + 1.3f * (sphere - light);
-}
-// Looking away from the light, over the cubes: the near plane lies in the sphere's volume, so
-// z-pass alone fails; the sphere is in the occlusion pyramid but out of view (case 2).
-OrbitCamera eyeInShadow() {
-  return lookingFrom(underTheSphere(), {2.0f, 0.3f, -1.6f});
-}
-// Half a unit aside, looking up past the sphere at the stairs: the sphere in case 3.
-OrbitCamera lookingUp() {
-  return lookingFrom(underTheSphere() + glm::vec3(0.5f, 0.0f, 0.0f), {-2.5f, 1.6f, 0.9f});
-}
-
-LessonInfo lessonInfo() {
-  LessonInfo info;
-  info.id = "16-fast-robust-shadows";
-  info.title = "Fast, practical and robust shadows";
-  info.summary =
-      "McGuire et al.'s shadow-volume system: doubled vertices extruded on the GPU, z-pass or z-fail per\n"
-      "caster from the occlusion pyramid, dark caps as fans, light bounds, many lights in a float target.";
-  info.options = {
-      {"method", 'M',
-       "0 McGuire et al. (per caster: case 1 z-pass, 2 and 3 z-fail), 1 Everitt-Kilgard (always z-fail,\n"
-       "      full caps), 2 Lengyel (z-pass unless a caster is in the pyramid, then full z-fail), 3 z-pass "
-       "only",
-       0, 3},
-      {"light", 'L', "the light drawn last, whose stencil the frame ends with (the one --oracle checks)", 0,
-       kManyLights - 1},
-      {"many", 'N', "thirty-two dim point lights in a ring instead of the scene's four", 0},
-      {"float", 'F', "accumulate light in an RGBA16F target (off: RGBA8, which bands)", 1},
-      {"slices", 'Y', "the sphere's slices (stacks: half as many)", 24, 256, 4},
-      {"light-cap", 'C', "draw the light cap of case-3 casters", 1},
-      {"split", 'G', "split dark-cap fan triangles that span 180 degrees or more", 1},
-      {"bounds", 'B', "cull casters and scissor by the light's bounds", 1},
-      {"moving", 'O', "the moving casters (a torus and a cube above the grid)", 1},
-      {"show", 'X', "overlay: casters coloured by case, their volumes and silhouettes", 0},
-      {"fill", 'I',
-       "measure: each light's volumes drawn again without the depth test, in a pass of their own\n"
-       "      (volume-fill), whose fragments are every fragment the volumes rasterize",
-       0},
-      {"shadow", 'H', "shadows at all (off: every light reaches everything)", 1},
-      {"ambient", 'A',
-       "the built-in scene's ambient light, in hundredths (a scene file brings its own); the views\n"
-       "      from the sphere's shadow raise it, the warm light being behind the sphere there",
-       12, 100},
-      {"tint", 'W',
-       "overlay: the pixels the light drawn last leaves in shadow (stencil not 0) tinted blue, so a\n"
-       "      wrong count shows in the picture",
-       0},
-      {"stretch", 'K',
-       "overlay: a contrast stretch, the light sum doubled this many times before it is shown, so\n"
-       "      8-bit rounding's bands show",
-       0, 3},
-      {"silhouettes", 'E',
-       "how a closed caster's possible silhouette edges are found, built once per caster and queried\n"
-       "      per light, the same edges each way: 0 brute force (every edge of the mesh's adjacency), 1\n"
-       "      streaming (a SilhouetteCaster's facing and edge passes), 2 dual space (a tree of face\n"
-       "      planes the light's plane cuts, DualSilhouettes); an open caster always takes 0",
-       0, 2},
-  };
-  info.camera.target = {-0.2f, 0.6f, 0.0f};
-  info.camera.distance = 10.5f;
-  info.camera.azimuthDeg = 25.0f;
-  info.camera.elevationDeg = 32.0f;
-  info.camera.farPlane = kInfinity;
-  const std::pair<std::string, int> lit = {"ambient", kShadowAmbient}, tint = {"tint", 1};
-  info.variants = {
-      {"system", "the whole system: four lights, every caster by its case", {}},
-      {"case-colours",
-       "casters coloured by their case (green 1, amber 2, red 3, grey culled), volumes and silhouettes",
-       {{"show", 1}}},
-      {"directional",
-       "the directional light drawn last: every volume converges to one point",
-       {{"light", 3}}},
-      {"eye-in-shadow",
-       "the eye in the sphere's shadow, looking away: the sphere in case 2",
-       {},
-       {},
-       eyeInShadow()},
-      {"looking-up",
-       "the eye in the sphere's shadow, looking up past it: the sphere in case 3, its shadow tinted",
-       {lit, tint},
-       {},
-       lookingUp()},
-      {"looking-up-colours", "the same with the overlay", {lit, {"show", 1}}, {}, lookingUp()},
-      {"everitt-kilgard", "always z-fail with full caps", {{"method", 1}, lit, tint}, {}, lookingUp()},
-      {"lengyel",
-       "z-pass when no caster is in the pyramid, else full z-fail",
-       {{"method", 2}, lit, tint},
-       {},
-       lookingUp()},
-      {"zpass-only",
-       "z-pass for every caster with the eye in a shadow: the count is wrong",
-       {{"method", 3}},
-       {},
-       eyeInShadow()},
-      {"no-light-cap",
-       "the case-3 sphere without its light cap: the count is wrong, the tint shows where",
-       {{"light-cap", 0}, lit, tint},
-       {},
-       lookingUp()},
-      {"no-bounds", "no culling or scissor: the same shadows, more work", {{"bounds", 0}}},
-      {"many-lights",
-       "thirty-two dim lights accumulated in RGBA16F, shown contrast-stretched fourfold",
-       {{"many", 1}, {"stretch", 2}}},
-      {"many-lights-8bit",
-       "the same accumulated in RGBA8: each light rounded, bands (stretched fourfold)",
-       {{"many", 1}, {"float", 0}, {"stretch", 2}}},
-      {"pinf-fixed24",
-       "the whole system on the old path: a 24-bit fixed-point depth buffer with GL's depth mapping (Pinf)",
-       {},
-       {},
-       {},
-       false},
-  };
-  info.reversedDepth = true;  // a float depth buffer, reversed, where the driver has clip control
-  info.sceneLightOption = "light";
-  info.shadows = true;
-  info.passes = {"ambient", "shadows", "volume-fill", "illumination", "overlay"};
-  return info;
-}
 
 }  // namespace
 

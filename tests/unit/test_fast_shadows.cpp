@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
 #include <map>
+#include <tuple>
 #include <utility>
 
 #include "geometry/adjacency.h"
@@ -318,51 +319,59 @@ namespace {
 // A camera at the origin looking down -z, a point light behind it: a caster between them is in
 // the occlusion pyramid (case 2), one in front of the camera is not (case 1), one far off the
 // light's bounds is culled.
-std::vector<VolumeChoice> choicesFor(ShadowMethod method, float radius) {
+std::vector<int> casesFor(float radius) {
   const glm::mat4 vp = cameraAtOrigin();
   const glm::vec4 light(0, 0, 10, 1);
   const std::vector<BoundingSphere> casters = {{{0, 0, 5}, 0.5f}, {{0, 0, -5}, 0.5f}, {{40, 0, -5}, 0.5f}};
-  return chooseVolumes(method, casters, glm::vec3(light), radius, occlusionPyramid(nearRectangle(vp), light),
-                       viewFrustum(vp, false));
+  LightClip clip;
+  clip.centre = glm::vec3(light);
+  clip.radius = radius;
+  return shadowCases(casters, clip, occlusionPyramid(nearRectangle(vp), light), viewFrustum(vp, false));
 }
 
 }  // namespace
 
-TEST(ChooseVolumes, EachMethodsChoicePerCaster) {
-  const float unbounded = std::numeric_limits<float>::infinity();
-  {
-    const auto c = choicesFor(ShadowMethod::McGuire, 20.0f);
-    EXPECT_EQ(c[0].shadowCase, 2);
-    EXPECT_TRUE(c[0].zfail);
-    EXPECT_FALSE(c[0].fullCaps);
-    EXPECT_EQ(c[1].shadowCase, 1);
-    EXPECT_FALSE(c[1].zfail);
-    EXPECT_EQ(c[2].shadowCase, 0);  // beyond the light's reach
-  }
-  EXPECT_EQ(choicesFor(ShadowMethod::McGuire, unbounded)[2].shadowCase, 1);  // no bounds, no culling
-  for (const VolumeChoice& v : choicesFor(ShadowMethod::EverittKilgard, unbounded)) {
-    EXPECT_TRUE(v.zfail);
-    EXPECT_TRUE(v.fullCaps);
-  }
-  for (const VolumeChoice& v : choicesFor(ShadowMethod::Lengyel, unbounded)) {  // one in the pyramid: all
-    EXPECT_TRUE(v.zfail);
-    EXPECT_TRUE(v.fullCaps);
-  }
-  for (const VolumeChoice& v : choicesFor(ShadowMethod::ZPass, unbounded)) EXPECT_FALSE(v.zfail);
+TEST(ShadowCases, ByThePyramidAndTheLightsBounds) {
+  EXPECT_EQ(casesFor(20.0f), (std::vector<int>{2, 1, 0}));  // the third beyond the light's reach
+  EXPECT_EQ(casesFor(std::numeric_limits<float>::infinity()), (std::vector<int>{2, 1, 1}));  // no culling
 }
 
-TEST(CasterVolume, RangesFollowTheChoice) {
+TEST(RecipeFor, EachMethodPerCase) {
+  const auto recipe = [](ShadowMethod m, int shadowCase, bool anyInPyramid, bool lightCap = true,
+                         bool directional = false) {
+    const Recipe r = recipeFor(m, shadowCase, anyInPyramid, lightCap, directional);
+    return std::tuple(r.zfail, r.darkCap, r.lightCap);
+  };
+  using K = DarkCapKind;
+  // McGuire et al.: z-pass outside the pyramid, the fan inside it, the light cap when on screen.
+  EXPECT_EQ(recipe(ShadowMethod::McGuire, 1, true), std::tuple(false, K::None, false));
+  EXPECT_EQ(recipe(ShadowMethod::McGuire, 2, true), std::tuple(true, K::Fan, false));
+  EXPECT_EQ(recipe(ShadowMethod::McGuire, 3, true), std::tuple(true, K::Fan, true));
+  EXPECT_EQ(recipe(ShadowMethod::McGuire, 3, true, false), std::tuple(true, K::Fan, false));
+  EXPECT_EQ(recipe(ShadowMethod::McGuire, 3, true, true, true), std::tuple(true, K::None, true));
+  // Everitt and Kilgard: both full caps, whatever the case.
+  for (int c : {1, 2, 3})
+    EXPECT_EQ(recipe(ShadowMethod::EverittKilgard, c, false), std::tuple(true, K::BackFaces, true));
+  // Lengyel: z-pass until some caster of the light is in the pyramid, then full z-fail for all.
+  EXPECT_EQ(recipe(ShadowMethod::Lengyel, 1, false), std::tuple(false, K::None, false));
+  EXPECT_EQ(recipe(ShadowMethod::Lengyel, 1, true), std::tuple(true, K::BackFaces, true));
+  for (int c : {1, 2, 3}) EXPECT_EQ(recipe(ShadowMethod::ZPass, c, true), std::tuple(false, K::None, false));
+}
+
+TEST(VolumeOf, RangesFollowTheRecipe) {
   const PreparedCaster cube = prepareCaster(makeCube(0.5f));
   const glm::vec4 light(0.3f, 3.0f, 0.2f, 1.0f);
-  const VolumeIndices zpass = casterVolume(cube, light, {1, false, false});
+  const std::vector<bool> lit = facesLight(cube.mesh, light);
+  const std::vector<SilhouetteEdge> edges = possibleSilhouetteEdges(cube, lit);
+  const VolumeIndices zpass = volumeOf(cube, light, {false, DarkCapKind::None, false}, lit, edges);
   EXPECT_EQ(zpass.volume.sides, 4u * 6u);  // four silhouette edges, a quad each
   EXPECT_EQ(zpass.volume.darkCap + zpass.volume.lightCap, 0u);
   EXPECT_EQ(zpass.indices.size(), zpass.volume.sides + zpass.volume.silhouette);
-  const VolumeIndices fan = casterVolume(cube, light, {3, true, false});
+  const VolumeIndices fan = volumeOf(cube, light, {true, DarkCapKind::Fan, true}, lit, edges);
   EXPECT_EQ(fan.volume.darkCap, 3u * 2u);   // four edges, the apex's two left out
   EXPECT_EQ(fan.volume.lightCap, 3u * 2u);  // the top face
-  EXPECT_EQ(casterVolume(cube, light, {3, true, false}, false).volume.lightCap, 0u);
-  const VolumeIndices full = casterVolume(cube, light, {1, true, true});
+  EXPECT_EQ(volumeOf(cube, light, {true, DarkCapKind::Fan, false}, lit, edges).volume.lightCap, 0u);
+  const VolumeIndices full = volumeOf(cube, light, {true, DarkCapKind::BackFaces, true}, lit, edges);
   EXPECT_EQ(full.volume.darkCap, 3u * 10u);  // the five faces away from the light
   EXPECT_EQ(full.volume.lightCap, 3u * 2u);
   std::vector<std::uint32_t> closed(
