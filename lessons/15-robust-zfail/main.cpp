@@ -32,6 +32,7 @@
 #include "geometry/scene.h"
 #include "geometry/shadow_volume.h"
 #include "geometry/shapes.h"
+#include "gl/depth_mapping.h"
 #include "gl/errors.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
@@ -84,8 +85,11 @@ class RobustZFail final : public Lesson {
   void render(Frame& f) override {
     // 0. The depth mapping, before anything is cleared or drawn. Reversed (Frame::reversedDepth):
     // window depth is clip z / w with no remapping, 1 at the near plane and n/d at distance d,
-    // which the float depth buffer holds to about 2^-24 of d at every distance.
-    setDepthMapping(f);
+    // which the float depth buffer holds to about 2^-24 of d at every distance. Every depth test
+    // and the projection follow it (gl/depth_mapping.h).
+    depth_ = depthMappingOf(f);
+    if (f.reversedDepth) glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // no 0.5 + 0.5 z/w
+    glClearDepth(depth_.farthest);                                      // 0 reversed: infinity
     glClearColor(0.1f, 0.1f, 0.13f, 1.0f);
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);  // depth: the farthest
@@ -99,7 +103,7 @@ class RobustZFail final : public Lesson {
 
     // 1. Ambient light everywhere, filling the depth buffer that every later pass tests against.
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(less_);  // the nearest surface wins
+    glDepthFunc(depth_.less);  // the nearest surface wins
     // Both sides: where the near plane cuts into a closed object, its inside shows, as the
     // oracle's ray cast sees it (culled, the background would show through it).
     glDisable(GL_CULL_FACE);
@@ -171,7 +175,7 @@ class RobustZFail final : public Lesson {
                 lights[i].light.radius);
       glDisable(GL_BLEND);
       glDisable(GL_STENCIL_TEST);
-      glDepthFunc(less_);
+      glDepthFunc(depth_.less);
       f.pass("lit", which);
     }
     glDepthMask(GL_TRUE);
@@ -181,22 +185,6 @@ class RobustZFail final : public Lesson {
   }
 
  private:
-  // Reversed float depth or GL's mapping, as the frame says; every depth comparison follows it.
-  void setDepthMapping(const Frame& f) {
-    if (f.reversedDepth) {
-      glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // window depth = clip z / w: no 0.5 + 0.5 z/w
-      glClearDepth(0.0);                             // the farthest depth is 0 (infinity)
-      less_ = GL_GREATER;                            // nearer is greater
-      lequal_ = GL_GEQUAL;
-      projection_ = reversedDepth(f.projection);  // clip z' = (w - z) / 2: near 1, infinity 0
-    } else {                                      // GL's default clip control, as the framework leaves it
-      glClearDepth(1.0);
-      less_ = GL_LESS;
-      lequal_ = GL_LEQUAL;
-      projection_ = f.projection;
-    }
-  }
-
   std::vector<glm::mat4> modelsAt(double time) const {
     std::vector<glm::mat4> models;
     for (const SceneObject& o : scene_.objects) models.push_back(o.modelAt(time));
@@ -293,7 +281,7 @@ class RobustZFail final : public Lesson {
   // One light's volumes; with a plan, only the pieces of group `group`.
   void drawVolumes(const Frame& f, std::size_t lightIndex, glm::vec4 colour, const CountPlan* plan = nullptr,
                    int group = 0) {
-    volume_.set("viewProjection", projection_ * f.view);
+    volume_.set("viewProjection", depth_.projection * f.view);
     volume_.set("colour", colour);
     const std::vector<VolumePiece>& pieces = pieces_[lightIndex];
     for (std::size_t k = 0; k < pieces.size(); ++k) {
@@ -348,7 +336,7 @@ class RobustZFail final : public Lesson {
 
     std::vector<glm::vec4> segments;
     volume_.set("colour", glm::vec4(1.0f, 0.95f, 0.3f, 1.0f));
-    glDepthFunc(lequal_);  // on the casters' own edges
+    glDepthFunc(depth_.lequal);  // on the casters' own edges
     for (std::size_t c = 0; c < scene_.objects.size(); ++c) {
       const SceneObject& o = scene_.objects[c];
       if (!o.casts) continue;
@@ -365,14 +353,14 @@ class RobustZFail final : public Lesson {
       volume_.set("model", volumeModels_[c]);
       silhouettes_.draw();
     }
-    glDepthFunc(less_);
+    glDepthFunc(depth_.less);
     glDepthMask(GL_TRUE);
     f.pass("silhouettes");
   }
 
   void drawScene(const Frame& f, const std::vector<glm::mat4>& models, glm::vec3 ambient, glm::vec4 light,
                  glm::vec3 lightColour, float radius) {
-    light_.set("viewProjection", projection_ * f.view);
+    light_.set("viewProjection", depth_.projection * f.view);
     light_.set("ambient", ambient);
     light_.set("light", light);
     light_.set("lightColour", lightColour);
@@ -399,8 +387,7 @@ class RobustZFail final : public Lesson {
   const Scene& scene_;  // the one drawn
   bool fromFile_;       // a file's lights all shine; the variants pick among the built-in scene's
   bool mirroredView_ = false;
-  GLenum less_ = GL_LESS, lequal_ = GL_LEQUAL;  // the depth tests of this frame's depth mapping
-  glm::mat4 projection_{1.0f};                  // what the frame draws with: f.projection, maybe reversed
+  DepthMapping depth_;  // this frame's: its depth tests and the projection it draws with
   Program light_, volume_;
   std::vector<std::unique_ptr<GpuMesh>> gpu_;
   SolidsSeen solids_;  // this frame's rooms

@@ -1,12 +1,12 @@
-// Lesson 16 around its algorithm: see classroom.h.
-#include "classroom.h"
-
+// Lesson 16 around its algorithm: the options, variants and cameras a class chooses from, the
+// built-in scene, the overlays and the counts --stats reports. None changes how a shadow is counted.
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>
 
+#include "fast_robust_shadows.h"
 #include "geometry/shapes.h"
 
 namespace stencil::fast_robust_shadows {
@@ -241,6 +241,125 @@ void tintShadow(const Program& flat, const WindowRectangle& window) {
   glStencilMask(0xFF);
   glDisable(GL_STENCIL_TEST);
   glEnable(GL_DEPTH_TEST);
+}
+
+// ---- the case overlay ----------------------------------------------------------------------------
+
+// The casters coloured by their case for the light drawn last (grey culled, green 1, amber 2,
+// red 3), their volumes translucent in the same colour, their silhouettes as lines.
+void FastRobustShadows::drawOverlay(const Frame& f) {
+  const glm::vec4 caseColour[4] = {{0.5f, 0.5f, 0.5f, 0.55f},
+                                   {0.2f, 0.85f, 0.3f, 0.55f},
+                                   {1.0f, 0.7f, 0.1f, 0.55f},
+                                   {1.0f, 0.15f, 0.1f, 0.55f}};
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(depth_.lequal);
+  glDepthMask(GL_FALSE);  // the overlay changes no depth (and, stencil test off, no stencil)
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  // The tint lies on the caster, drawn by another shader: pulled towards the eye, which is
+  // towards smaller depths in GL's mapping and larger ones reversed.
+  const float towardsEye = f.reversedDepth ? 1.0f : -1.0f;
+  glPolygonOffset(towardsEye, towardsEye);
+  for (const Caster& c : casters_) {
+    flat_.set("transform", depth_.projection * f.view * meshes_.models()[c.object]);
+    flat_.set("colour", caseColour[c.volume.shadowCase]);
+    meshes_.drawObject(c.object);
+  }
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glDisable(GL_CULL_FACE);  // both sides of the volumes show
+  const SceneLight& light = scene_.lights[static_cast<std::size_t>(lightOrder(f).back())];
+  for (const Caster& c : casters_) {
+    const CasterVolume& v = c.volume;
+    if (v.shadowCase == 0) continue;
+    setExtrusion(f, c, light.position);
+    extrude_.set("colour", glm::vec4(glm::vec3(caseColour[v.shadowCase]), 0.12f));
+    c.gpu->draw(0, v.sides + v.darkCap + v.lightCap);
+    c.gpu->drawSplit();
+    extrude_.set("colour", glm::vec4(1.0f, 1.0f, 0.6f, 1.0f));
+    glDepthFunc(GL_ALWAYS);  // the silhouettes show through their casters
+    c.gpu->draw(v.sides + v.darkCap + v.lightCap, v.silhouette, GL_LINES);
+    glDepthFunc(depth_.lequal);
+  }
+  glDisable(GL_BLEND);
+  glDepthFunc(depth_.less);
+  glDepthMask(GL_TRUE);
+}
+
+// ---- the counts --stats reports, the volume-fill measure, the oracle's claim ----------------------
+
+// The counts --stats reports, present in every frame whatever happens in it.
+void FastRobustShadows::startCounts(Frame& f) {
+  for (const char* name :
+       {"lights_drawn", "lights_offscreen", "casters_culled", "casters_case1", "casters_case2",
+        "casters_case3", "casters_zfail", "side_triangles", "dark_cap_triangles", "light_cap_triangles",
+        "split_fan_triangles", "fan_spheres", "depth_bounds_used", "depth_bounds_skipped",
+        "objects_cut_by_near_plane", "rooms", "lights_buried"})
+    f.count(name, 0);
+}
+
+// What one caster cost the light being drawn: skipped (case 0, culled by the light's bounds; or
+// a room), or its case, its silhouette query and its volumes, lightVolumes_ from `first` on.
+void FastRobustShadows::recordCaster(Frame& f, const Caster& c, int shadowCase, bool room,
+                                     std::size_t first) const {
+  if (shadowCase == 0) return f.count("casters_culled");
+  if (room) return f.count("rooms");
+  f.count("casters_case" + std::to_string(shadowCase));
+  if (c.dual && f.option("silhouettes") == 2) {
+    f.count("dual_cells_visited", c.dual->lastQuery().cellsVisited);
+    f.count("dual_edges_tested", c.dual->lastQuery().edgesTested);
+  }
+  if (lightVolumes_[first].piece) f.count("volume_pieces", lightVolumes_.size() - first);
+  for (std::size_t k = first; k < lightVolumes_.size(); ++k) {
+    const CasterVolume& v = lightVolumes_[k].volume;
+    if (v.zfail) f.count("casters_zfail");
+    f.count("side_triangles", v.sides / 3);
+    f.count("dark_cap_triangles", v.darkCap / 3 + v.splitVertices / 3);
+    f.count("light_cap_triangles", v.lightCap / 3);
+    f.count("split_fan_triangles", v.splitTriangles);
+    f.count("fan_spheres", static_cast<std::uint64_t>(v.spheres));
+  }
+}
+
+// Per caster, for the light drawn last: its case (0 culled) and what its volume cost.
+void FastRobustShadows::recordLastLight(Frame& f) const {
+  for (const Caster& c : casters_) {
+    const std::string& name = scene_.objects[c.object].name;
+    f.count("case." + name, static_cast<std::uint64_t>(c.volume.shadowCase));
+    f.count("sides." + name, c.volume.sides / 3);
+    f.count("dark_cap." + name, c.volume.darkCap / 3 + c.volume.splitVertices / 3);
+    f.count("light_cap." + name, c.volume.lightCap / 3);
+  }
+}
+
+// The light's volumes once more, every fragment passing: nothing written, only counted by the
+// pass's occlusion query. The same geometry and scissor as the shadows pass.
+void FastRobustShadows::drawVolumeFill(const glm::vec4& light) {
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glDepthMask(GL_FALSE);
+  glDisable(GL_DEPTH_TEST);  // in front of the scene or behind, every fragment is fill
+  glDisable(GL_CULL_FACE);
+  for (const LightVolume& lv : lightVolumes_) {
+    const CasterVolume& v = lv.volume;
+    const glm::mat4& model = meshes_.models()[casters_[lv.caster].object];
+    extrude_.set("model", model);
+    extrude_.set("light", glm::inverse(model) * light);
+    casters_[lv.caster].gpu->draw(lv.first, v.sides + v.darkCap + v.lightCap);
+    if (lv.first == 0) casters_[lv.caster].gpu->drawSplit();
+  }
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_CULL_FACE);
+}
+
+std::optional<ShadowCheck> FastRobustShadows::shadowCheck(const Frame& f) const {
+  if (!f.on("shadow") || scene_.lights.empty()) return std::nullopt;
+  const SceneLight& light = scene_.lights[static_cast<std::size_t>(lightOrder(f).back())];
+  ShadowCheck check{{}, light.position, [](std::uint8_t s) { return s == 0; }, true};
+  if (f.on("bounds")) check.lightRadius = light.radius;
+  for (const SceneObject& o : scene_.objects)
+    check.objects.push_back({&o.mesh, o.modelAt(f.time), o.casts, o.receives});
+  return check;
 }
 
 }  // namespace stencil::fast_robust_shadows
