@@ -367,6 +367,11 @@ Image stencilBitPlanes(const Image& stencil) {
   return out;
 }
 
+std::string hoursAndMinutes(int minutes) {
+  const int m = minutes % 60;
+  return std::to_string(minutes / 60) + "h" + (m == 0 ? "" : (m < 10 ? "0" : "") + std::to_string(m));
+}
+
 Image shadowHoursPicture(const std::vector<std::uint16_t>& counts, int width, int height, int steps,
                          int stepMinutes) {
   const int top = std::max(1, steps);
@@ -380,11 +385,7 @@ Image shadowHoursPicture(const std::vector<std::uint16_t>& counts, int width, in
       std::uint8_t* p = map.at(x, y);
       p[0] = c[0], p[1] = c[1], p[2] = c[2], p[3] = 255;
     }
-  // Hours with one decimal where a step is not a whole number of hours.
-  const auto hours = [stepMinutes](int k) {
-    const int tenths = static_cast<int>(std::lround(k * stepMinutes / 6.0));
-    return std::to_string(tenths / 10) + (tenths % 10 ? "." + std::to_string(tenths % 10) : "") + "h";
-  };
+  const auto hours = [stepMinutes](int k) { return hoursAndMinutes(k * stepMinutes); };
   const Image legend = countLegend(histogram, top, false, width, hours);
   Image out(width, height + legend.height, 4);
   std::copy(map.pixels.begin(), map.pixels.end(), out.pixels.begin());

@@ -69,7 +69,12 @@ Image countPicture(const Image& stencil, bool saturates);
 // A shadow-hours map (--shadow-hours): counts[i] is how many of `steps` sun positions above the
 // horizon (the daylight steps; night is not shadow), stepMinutes apart, left pixel i (top row
 // first, width x height) in shadow. Each pixel in
-// countColour(count, steps), and below, countLegend labelled in hours (count x stepMinutes / 60).
+// countColour(count, steps), and below, countLegend labelled in hours (hoursAndMinutes of
+// count x stepMinutes).
+// A legend's label for a span of time, exact in the legend's few glyphs: "3h" on the hour, else
+// hours and two digits of minutes ("1h20", "0h05"). minutes >= 0.
+std::string hoursAndMinutes(int minutes);
+
 Image shadowHoursPicture(const std::vector<std::uint16_t>& counts, int width, int height, int steps,
                          int stepMinutes);
 

@@ -189,3 +189,12 @@ TEST(CountView, PictureColoursEachCountAndTheLegendShowsTheHistogram) {
                    saturatedCountColour();
   EXPECT_FALSE(cyanInPlain);
 }
+
+TEST(ShadowHoursView, LegendLabelsAreExactHoursAndMinutes) {
+  EXPECT_EQ(hoursAndMinutes(0), "0h");
+  EXPECT_EQ(hoursAndMinutes(180), "3h");
+  EXPECT_EQ(hoursAndMinutes(20), "0h20");  // a twenty-minute step, not "0.3h"
+  EXPECT_EQ(hoursAndMinutes(80), "1h20");
+  EXPECT_EQ(hoursAndMinutes(65), "1h05");
+  EXPECT_EQ(hoursAndMinutes(1440), "24h");
+}
