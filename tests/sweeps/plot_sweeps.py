@@ -389,16 +389,20 @@ def plot_csg(path):
     fig, (ms, passes) = plt.subplots(1, 2, figsize=(11, 4.2), layout="constrained")
     for i, method in enumerate(methods):
         colour = f"C{i}"
+        # A method with occlusion queries makes the same passes as the one without: dashed, with
+        # hollow markers drawn larger, so that the two show where they coincide.
+        queries = method.endswith("+queries")
+        style = dict(color=colour, markerfacecolor="none" if queries else colour, markeredgewidth=1.2)
         for ax, field in ((ms, "frame_ms"), (passes, "passes")):
             grid = sorted((r for r in rows if r["method"] == method and r["scene"] == "grid"),
                           key=lambda r: r["primitives"])
             if grid:
-                ax.plot([r["primitives"] for r in grid], [r[field] for r in grid], "o-", color=colour,
-                        markersize=3.5, label=method if ax is passes else None)
+                ax.plot([r["primitives"] for r in grid], [r[field] for r in grid], "o--" if queries else "o-",
+                        markersize=6 if queries else 3.5, label=method if ax is passes else None, **style)
             for scene, marker in (("grid3", "s"), ("rack", "*")):
                 for r in rows:
                     if r["method"] == method and r["scene"] == scene:
-                        ax.plot([r["primitives"]], [r[field]], marker, color=colour, markersize=8)
+                        ax.plot([r["primitives"]], [r[field]], marker, markersize=13 if queries else 7, **style)
     for ax, what in ((ms, "time per frame (ms, 320x240, llvmpipe)"), (passes, "passes per frame")):
         ax.set_xscale("log")
         ax.set_yscale("log")
