@@ -307,6 +307,7 @@ Recipe recipeFor(ShadowMethod method, int shadowCase, bool anyInPyramid, bool li
   const bool fullCaps =
       method == ShadowMethod::EverittKilgard || (method == ShadowMethod::Lengyel && anyInPyramid);
   Recipe r;
+  if (shadowCase == 0) return r;  // culled: no volume
   r.zfail = method == ShadowMethod::McGuire ? shadowCase != 1 : fullCaps;
   if (r.zfail && !directional) r.darkCap = fullCaps ? DarkCapKind::BackFaces : DarkCapKind::Fan;
   r.lightCap = r.zfail && (fullCaps || (shadowCase == 3 && lightCapInCase3));
@@ -370,6 +371,10 @@ std::vector<int> shadowCases(const std::vector<BoundingSphere>& casters, const L
     cases.push_back(culled ? 0 : shadowCase(pyramid, frustum, c.centre, c.radius));
   }
   return cases;
+}
+
+bool anyInPyramid(const std::vector<int>& cases) {
+  return std::any_of(cases.begin(), cases.end(), [](int c) { return c > 1; });
 }
 
 }  // namespace stencil

@@ -9,7 +9,16 @@
 //     the light cap;
 //   - the dark cap as a fan over the silhouette edges at infinity, with its triangles that span
 //     180 degrees or more split;
-//   - the light's bounds: casters culled against them, and a scissor rectangle.
+//   - the light's bounds: casters culled against them, and a scissor rectangle;
+//   - one caster's volume for one light: its case (shadowCases), what the case asks for
+//     (recipeFor: z-pass or z-fail, which dark cap, whether a light cap), and the volume as
+//     indices into the doubled vertex array (volumeOf).
+// Counting a volume (lesson 16's countVolume): two-sided stencil, no culling, depth and colour
+// writes off, depth test LESS (GREATER with reversed depth). Z-pass draws the sides, front faces
+// INCR_WRAP where the depth test passes, back faces DECR_WRAP. Z-fail draws the sides, the dark
+// cap and its split triangles with back faces INCR_WRAP where the depth test fails, front faces
+// DECR_WRAP, then the light cap with depth func NEVER: it lies on the caster's own surface, so it
+// must always take the fail path. A pixel whose count ends 0 is lit.
 // Lights are homogeneous as everywhere: w = 1 a point, w = 0 the direction towards the light.
 //
 // Depends on: GLM, mesh, adjacency, weld, shadow_volume, bounds, frustum (C++17).
@@ -148,7 +157,7 @@ BoundingSphere worldBounds(const BoundingSphere& local, const glm::mat4& model);
 
 // ---- one caster's volume for one light, by method (lessons 13 and 16) --------------------------
 
-// The ways to build a light's volumes that lesson 16 offers:
+// The ways to build a light's volumes (lesson 16's --set method, lesson 13's --set volumes):
 //   McGuire       per caster by its case: 1 z-pass with the sides alone, 2 z-fail with the fan
 //                 dark cap, 3 the same with the light cap;
 //   EverittKilgard  always z-fail, both caps of every volume (the faces away from the light at
@@ -174,20 +183,23 @@ struct Recipe {
   bool lightCap = false;
 };
 
-// The one place a method and a caster's case (1, 2 or 3; not 0) become a recipe:
+// The one place a method and a caster's case become a recipe. shadowCase 1, 2 or 3; a culled
+// caster (0) has no volume, and gets the empty recipe (z-pass, no caps).
 //   McGuire          1 z-pass, the sides alone; 2 z-fail with the fan; 3 the same and the light
 //                    cap (lightCapInCase3 false leaves it out, to show the count go wrong);
 //   EverittKilgard   z-fail with both full caps, whatever the case;
 //   Lengyel          z-pass while no caster of the light meets the occlusion pyramid
 //                    (anyInPyramid: some case above 1), else as EverittKilgard;
 //   ZPass            z-pass, which fails with the eye in a shadow.
-// A directional light's z-fail volume needs no dark cap: its sides meet at one point.
+// A directional light's z-fail volume needs no dark cap: its sides meet at one point. (Lesson 16
+// closes a caster that would nest past an 8-bit count in pieces of its light cap, each a
+// z-fail volume with DarkCapKind::Piece and its light cap: the one recipe made elsewhere.)
 Recipe recipeFor(ShadowMethod method, int shadowCase, bool anyInPyramid, bool lightCapInCase3,
                  bool directional);
 
 // What one caster draws for one light, as ranges of its index list (volumeOf).
 struct CasterVolume {
-  int shadowCase = 0;  // 1, 2 or 3 from the pyramid; 0 culled
+  int shadowCase = 0;  // 1, 2 or 3 from the pyramid; 0 culled, or not set (volumeOf leaves it)
   bool zfail = false;
   std::size_t sides = 0, darkCap = 0, lightCap = 0, silhouette = 0;  // index counts, in this order
   std::size_t splitTriangles = 0, splitVertices = 0;  // split vertices include spheres' octahedra
@@ -208,6 +220,8 @@ struct VolumeIndices {
 // shadow_volume.h's litFacePieces, with DarkCapKind::Piece); edges: the possible silhouette
 // edges between them (an open caster's both ways, possibleSilhouetteEdges(PreparedCaster, lit)).
 // splitFan: split fan triangles that span 180 degrees or more (McGuire et al. section 5).
+// light: w = 1 a point, w = 0 a direction; DarkCapKind::Fan needs a point light (recipeFor never
+// asks a directional light for one), as the fan's apex is the light itself.
 VolumeIndices volumeOf(const PreparedCaster& caster, const glm::vec4& light, const Recipe& recipe,
                        const std::vector<bool>& lit, const std::vector<SilhouetteEdge>& edges,
                        bool splitFan = true);
@@ -215,6 +229,8 @@ VolumeIndices volumeOf(const PreparedCaster& caster, const glm::vec4& light, con
 // A light's bounds for one view: the sphere (radius infinite for a directional light or with
 // bounds off), its scissor rectangle (the whole window when unbounded; empty when off screen)
 // and the window depths it spans, for EXT_depth_bounds_test where `depthBounds` says it applies.
+// view and projection in GL's convention (Frame::projection); with reversed depth (lesson 15)
+// the same bounds are glDepthBoundsEXT(1 - depth.farthest, 1 - depth.nearest).
 struct LightClip {
   glm::vec3 centre{0.0f};
   float radius = 0.0f;
@@ -228,8 +244,14 @@ LightClip lightClip(const glm::vec4& light, float radius, bool bounds, const glm
 
 // Every caster's case for one light, from their world bounding spheres: shadowCase's 1, 2 or 3,
 // or 0 where the light's bounds (clip.centre, clip.radius; an infinite radius culls nothing)
-// miss the caster (culledByLight).
+// miss the caster (culledByLight); one case per sphere, in their order. Everything in world
+// space and GL's clip convention: pyramid = occlusionPyramid(nearRectangle(vp), light) and
+// frustum = viewFrustum(vp, false) (no far plane) for vp = projection x view, never a
+// reversed-depth projection.
 std::vector<int> shadowCases(const std::vector<BoundingSphere>& casters, const LightClip& clip,
                              const Frustum& pyramid, const Frustum& frustum);
+
+// Whether some caster meets the occlusion pyramid (a case above 1): Lengyel's switch to z-fail.
+bool anyInPyramid(const std::vector<int>& cases);
 
 }  // namespace stencil

@@ -284,7 +284,7 @@ class DepthComplexity final : public Lesson {
       }
       const std::vector<int> cases =
           shadowCases(world, clip, occlusionPyramid(nearRect, light.position), frustum);
-      const bool anyInPyramid = std::any_of(cases.begin(), cases.end(), [](int c) { return c > 1; });
+      const bool inPyramid = anyInPyramid(cases);
       for (std::size_t c = 0; c < casters_.size(); ++c) {
         if (cases[c] == 0) {
           f.count("casters_culled");
@@ -295,7 +295,7 @@ class DepthComplexity final : public Lesson {
         const glm::vec4 local = glm::inverse(model) * light.position;  // the light in the caster's space
         const std::vector<bool> lit = facesLight(o.caster.mesh, local);
         const VolumeIndices built =
-            volumeOf(o.caster, local, recipeFor(method, cases[c], anyInPyramid, true, local.w == 0.0f), lit,
+            volumeOf(o.caster, local, recipeFor(method, cases[c], inPyramid, true, local.w == 0.0f), lit,
                      possibleSilhouetteEdges(o.caster, lit));
         const CasterVolume& v = built.volume;
         if (v.zfail) f.count("casters_zfail");

@@ -28,7 +28,6 @@
 #include <string>
 
 #include "geometry/bounds.h"
-#include "geometry/projection.h"
 #include "geometry/scene.h"
 #include "geometry/shadow_volume.h"
 #include "geometry/shapes.h"

@@ -14,7 +14,7 @@ namespace {
 
 constexpr int kManyLights = 32;
 // The ambient light, in hundredths, of the views from inside the sphere's shadow: there the warm
-// light is behind the sphere, and at the scene's 0.12 most of the picture is near black.
+// light is behind the sphere, and at the default 0.12 most of the picture is near black.
 constexpr int kShadowAmbient = 40;
 // Objects on the ground stand a little into it: a silhouette edge lying in the ground's plane
 // would extrude into a side face coplanar with the ground there, whose depth test is a toss-up.
@@ -51,7 +51,6 @@ Scene builtInScene(int slices, bool many, bool moving) {
   using glm::translate;
   const glm::mat4 id(1.0f);
   Scene s;
-  s.ambient = glm::vec3(0.12f);
   s.objects.push_back(sceneObject("ground", makePlane(7.0f, 1), id, {0.75f, 0.74f, 0.7f}, false));
   s.objects.push_back(
       sceneObject("stairs", makeStairs(6, 2.2f, 0.3f, 0.45f),
@@ -289,7 +288,8 @@ void FastRobustShadows::drawOverlay(const Frame& f) {
 
 // ---- the counts --stats reports, the volume-fill measure, the oracle's claim ----------------------
 
-// The counts --stats reports, present in every frame whatever happens in it.
+// The counts --stats reports in every frame, whatever happens in it (volume_pieces, count_groups
+// and the dual_* counts only in frames that have them).
 void FastRobustShadows::startCounts(Frame& f) {
   for (const char* name :
        {"lights_drawn", "lights_offscreen", "casters_culled", "casters_case1", "casters_case2",
@@ -335,16 +335,14 @@ void FastRobustShadows::recordLastLight(Frame& f) const {
 
 // The light's volumes once more, every fragment passing: nothing written, only counted by the
 // pass's occlusion query. The same geometry and scissor as the shadows pass.
-void FastRobustShadows::drawVolumeFill(const glm::vec4& light) {
+void FastRobustShadows::drawVolumeFill(const Frame& f, const glm::vec4& light) {
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthMask(GL_FALSE);
   glDisable(GL_DEPTH_TEST);  // in front of the scene or behind, every fragment is fill
   glDisable(GL_CULL_FACE);
   for (const LightVolume& lv : lightVolumes_) {
     const CasterVolume& v = lv.volume;
-    const glm::mat4& model = meshes_.models()[casters_[lv.caster].object];
-    extrude_.set("model", model);
-    extrude_.set("light", glm::inverse(model) * light);
+    setExtrusion(f, casters_[lv.caster], light);
     casters_[lv.caster].gpu->draw(lv.first, v.sides + v.darkCap + v.lightCap);
     if (lv.first == 0) casters_[lv.caster].gpu->drawSplit();
   }

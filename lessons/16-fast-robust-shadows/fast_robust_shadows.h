@@ -75,7 +75,7 @@ class FastRobustShadows final : public Lesson {
   static void startCounts(Frame& f);
   void recordCaster(Frame& f, const Caster& c, int shadowCase, bool room, std::size_t first) const;
   void recordLastLight(Frame& f) const;
-  void drawVolumeFill(const glm::vec4& light);
+  void drawVolumeFill(const Frame& f, const glm::vec4& light);
 
  public:
   std::optional<ShadowCheck> shadowCheck(const Frame& f) const override;

@@ -16,7 +16,8 @@
 //   3. the case from the occlusion pyramid, from the light to the camera's near rectangle
 //      (nearRectangle, occlusionPyramid, shadowCases): outside it z-pass with the sides alone
 //      (case 1), inside it z-fail with a dark cap, and the light cap only where the caster may
-//      be on screen (case 3, not 2). recipeFor is the one function that decides;
+//      be on screen (case 3, not 2). recipeFor is the one function that decides (but for a
+//      caster that could nest past an 8-bit count, which buildVolume closes in pieces);
 //   4. the dark cap as a fan over the silhouette at infinity (fanDarkCap; closeAroundLight for a
 //      light inside the caster's hull), and
 //   5. the light cap, the caster's lit faces (lightCapIndices): volumeOf puts the sides and both
@@ -26,7 +27,7 @@
 //      EXT_depth_bounds_test;
 //   7. the rendering system of section 8 (render below): an ambient pass fills the depth
 //      buffer, then per light the stencil cleared, its volumes counted (countVolume has the
-//      stencil recipe), and its light added where the stencil is 0, into a float target
+//      stencil operations), and its light added where the stencil is 0, into a float target
 //      (gl/accumulation_target.h) so many lights do not band.
 // Scene files may also bring open meshes, whose faces block light from both sides (a volume
 // from each side), and more nested volumes than 8 bits count (buildVolume, countVolumes).
@@ -36,18 +37,43 @@
 // The options, variants, built-in scene, overlays and --stats counts are in classroom.cpp.
 
 #include <algorithm>
-#include <cmath>
 #include <memory>
 #include <string>
 
 #include "fast_robust_shadows.h"
-#include "geometry/projection.h"
 #include "gl/errors.h"
 
 namespace stencil::fast_robust_shadows {
-namespace {
 
-// ---- 2. the possible silhouette ---------------------------------------------------------------
+// ---- 1. the doubled vertex array ------------------------------------------------------------
+
+FastRobustShadows::FastRobustShadows(const Scene* fromFile)
+    : extrude_("common/extrude.vert", "common/flat.frag"), flat_("common/flat.vert", "common/flat.frag") {
+  if (fromFile) setScene(*fromFile);
+}
+
+// Each caster's welded vertices doubled on the GPU once (DoubledCaster: index i is (p_i, 1), n + i
+// is (p_i, 0)), with what the lights will ask of it: its bounds and whether it is convex.
+void FastRobustShadows::setScene(const Scene& scene) {
+  scene_ = scene;
+  fromFile_ = !scene.file.empty();
+  casters_.clear();
+  for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+    SceneObject& o = scene_.objects[i];
+    if (!o.casts) continue;
+    if (o.caster.mesh.positions.empty()) o.caster = prepareCaster(o.mesh);
+    Caster& c = casters_.emplace_back();
+    c.object = i;
+    c.bounds = boundingSphereOf(o.caster.mesh.positions);
+    c.gpu = std::make_unique<DoubledCaster>(o.caster.mesh);
+    c.convex = isConvex(o.caster.mesh, o.caster.adjacency);
+  }
+  meshes_.set(scene_);
+}
+
+// ---- 2. the possible silhouette -------------------------------------------------------------
+
+namespace {
 
 // The possible silhouette edges for a light in the caster's space, directed the way the lit face
 // walks them. A closed caster's are found the way --set silhouettes says, the same edges each
@@ -67,12 +93,7 @@ std::vector<SilhouetteEdge> possibleSilhouette(Caster& c, const PreparedCaster& 
 
 }  // namespace
 
-// ---- 7. the rendering system (section 8), with 6. the light's bounds --------------------------
-
-FastRobustShadows::FastRobustShadows(const Scene* fromFile)
-    : extrude_("common/extrude.vert", "common/flat.frag"), flat_("common/flat.vert", "common/flat.frag") {
-  if (fromFile) setScene(*fromFile);
-}
+// ---- 7. the rendering system (section 8), with 6. the light's bounds ------------------------
 
 void FastRobustShadows::render(Frame& f) {
   prepare(f);
@@ -160,7 +181,7 @@ void FastRobustShadows::render(Frame& f) {
     if (depthBounds) glDisable(GL_DEPTH_BOUNDS_TEST_EXT);
     endPass(f, "shadows", which, index);
     if (f.on("fill") && f.on("shadow")) {  // the fill the stencil test saw, for --stats
-      drawVolumeFill(light.position);
+      drawVolumeFill(f, light.position);
       endPass(f, "volume-fill", which);
     }
 
@@ -196,6 +217,8 @@ void FastRobustShadows::render(Frame& f) {
   f.pass("overlay");
 }
 
+// ---- 3. the case from the occlusion pyramid -------------------------------------------------
+
 // Every caster's volume for one light (world, homogeneous), into lightVolumes_ and uploaded.
 void FastRobustShadows::buildVolumes(Frame& f, const glm::vec4& light, const LightClip& clip,
                                      const Frustum& pyramid, const Frustum& frustum) {
@@ -203,7 +226,7 @@ void FastRobustShadows::buildVolumes(Frame& f, const glm::vec4& light, const Lig
   std::vector<BoundingSphere> world;
   for (const Caster& c : casters_) world.push_back(worldBounds(c.bounds, meshes_.models()[c.object]));
   const std::vector<int> cases = shadowCases(world, clip, pyramid, frustum);
-  const bool anyInPyramid = std::any_of(cases.begin(), cases.end(), [](int c) { return c > 1; });
+  const bool inPyramid = anyInPyramid(cases);
   const auto method = static_cast<ShadowMethod>(f.option("method"));
   lightVolumes_.clear();
   for (std::size_t c = 0; c < casters_.size(); ++c) {
@@ -213,10 +236,12 @@ void FastRobustShadows::buildVolumes(Frame& f, const glm::vec4& light, const Lig
     const bool room = solids_.room[casters_[c].object];
     if (cases[c] != 0 && !room)
       buildVolume(f, c, light, cases[c],
-                  recipeFor(method, cases[c], anyInPyramid, f.on("light-cap"), light.w == 0.0f));
+                  recipeFor(method, cases[c], inPyramid, f.on("light-cap"), light.w == 0.0f));
     recordCaster(f, casters_[c], cases[c], room, first);
   }
 }
+
+// ---- 4 and 5. the fan dark cap and the light cap: one caster's volume -----------------------
 
 // One caster's volume: 2, 4 and 5 above; where it could nest deeper than a count group's 127,
 // in pieces of its light cap instead, each closed by both of Everitt and Kilgard's caps.
@@ -262,6 +287,8 @@ std::size_t FastRobustShadows::nestingOf(const Caster& c, const PreparedCaster& 
   return nestingBound(static_cast<std::size_t>(std::count(lit.begin(), lit.end(), true)), edges, false,
                       outside);
 }
+
+// ---- counting the volumes in the stencil ----------------------------------------------------
 
 // Every volume of the light counted; where their counts could add past 255 (an 8-bit count
 // would wrap to 0, lit), in groups that cannot pass 127, each folded into bit 7.
@@ -329,6 +356,8 @@ void FastRobustShadows::setExtrusion(const Frame& f, const Caster& c, const glm:
   extrude_.set("light", glm::inverse(model) * worldLight);
 }
 
+// ---- the frame around them ------------------------------------------------------------------
+
 // Every pass ends in the framework's framebuffer, where its snapshot, the stencil pictures and
 // the shadow mask of light `mask` (-1: none) are read. Whatever Frame::pass and shadowMask leave
 // bound, the lesson draws on into its target: the one place it binds it again.
@@ -337,23 +366,6 @@ void FastRobustShadows::endPass(Frame& f, const char* name, const std::string& d
   f.pass(name, detail);
   if (mask >= 0) f.shadowMask("light-" + std::to_string(mask));
   target_->bind();
-}
-
-void FastRobustShadows::setScene(const Scene& scene) {
-  scene_ = scene;
-  fromFile_ = !scene.file.empty();
-  casters_.clear();
-  for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
-    SceneObject& o = scene_.objects[i];
-    if (!o.casts) continue;
-    if (o.caster.mesh.positions.empty()) o.caster = prepareCaster(o.mesh);
-    Caster& c = casters_.emplace_back();
-    c.object = i;
-    c.bounds = boundingSphereOf(o.caster.mesh.positions);
-    c.gpu = std::make_unique<DoubledCaster>(o.caster.mesh);
-    c.convex = isConvex(o.caster.mesh, o.caster.adjacency);
-  }
-  meshes_.set(scene_);
 }
 
 // The built-in scene follows the options that shape it.

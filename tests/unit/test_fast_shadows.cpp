@@ -356,6 +356,8 @@ TEST(RecipeFor, EachMethodPerCase) {
   EXPECT_EQ(recipe(ShadowMethod::Lengyel, 1, false), std::tuple(false, K::None, false));
   EXPECT_EQ(recipe(ShadowMethod::Lengyel, 1, true), std::tuple(true, K::BackFaces, true));
   for (int c : {1, 2, 3}) EXPECT_EQ(recipe(ShadowMethod::ZPass, c, true), std::tuple(false, K::None, false));
+  for (ShadowMethod m : {ShadowMethod::McGuire, ShadowMethod::EverittKilgard, ShadowMethod::Lengyel})
+    EXPECT_EQ(recipe(m, 0, true), std::tuple(false, K::None, false));  // culled: no volume
 }
 
 TEST(VolumeOf, RangesFollowTheRecipe) {
