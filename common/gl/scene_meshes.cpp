@@ -1,8 +1,7 @@
 #include "gl/scene_meshes.h"
 
-#include <cmath>
-
 #include "geometry/fast_shadows.h"
+#include "gl/light_shading.h"
 
 namespace stencil {
 
@@ -39,14 +38,14 @@ std::size_t SceneMeshes::place(const Scene& scene, double time, const glm::mat4&
 void SceneMeshes::draw(const Scene& scene, const glm::mat4& viewProjection, const glm::vec3& eye,
                        const glm::vec4& light, const glm::vec3& colour, float radius,
                        const glm::vec3& ambient) {
-  light_.set("viewProjection", viewProjection);
-  light_.set("ambient", ambient);
-  light_.set("light", light);
-  light_.set("lightColour", colour);
-  light_.set("radius", std::isinf(radius) ? 1e30f : radius);
-  light_.set("twoSided", 1);  // a wall seen from inside a room is lit on the side the eye sees
-  light_.set("eye", eye);
-  light_.set("shininess", 32.0f);
+  // The light's bounds (docs/scenes.md); a wall seen from inside a room is lit on the side the eye sees.
+  setLightShading(light_, {.viewProjection = viewProjection,
+                           .eye = eye,
+                           .light = light,
+                           .lightColour = colour,
+                           .ambient = ambient,
+                           .radius = radius,
+                           .twoSided = true});
   for (std::size_t i = 0; i < meshes_.size(); ++i) {
     light_.set("model", models_[i]);
     light_.set("colour", scene.objects[i].colour);

@@ -18,6 +18,7 @@
 #include "geometry/shapes.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
+#include "gl/light_marker.h"
 #include "gl/shader.h"
 
 using namespace stencil;
@@ -26,6 +27,7 @@ namespace {
 
 constexpr float kShadowAlpha = 0.5f;  // each darkening keeps half the light
 constexpr GLint kGroundTag = 1;
+constexpr glm::vec4 kMarkerColour{1.0f, 0.95f, 0.4f, 1.0f};
 
 class ProjectedShadows final : public Lesson {
  public:
@@ -36,11 +38,10 @@ class ProjectedShadows final : public Lesson {
         groundMesh_(makePlane(2.0f, 1)),
         holedGroundMesh_(makeSquareRing(2.0f, 0.6f)),
         torusMesh_(makeTorus(0.7f, 0.25f, 48, 24)),
-        markerMesh_(makeSphere(0.08f, 16, 8)),
         ground_(groundMesh_),
         holedGround_(holedGroundMesh_),
         torus_(torusMesh_),
-        marker_(markerMesh_) {}
+        marker_(0.08f, 16, 8) {}
 
   void render(Frame& f) override {
     const glm::vec4 light = lightAt(f);
@@ -54,7 +55,7 @@ class ProjectedShadows final : public Lesson {
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);  // closed casters: back faces are never seen
     drawLit(f, torus_, caster, {0.9f, 0.45f, 0.2f}, light);
-    if (light.w != 0.0f) drawMarker(f, glm::vec3(light));
+    if (light.w != 0.0f) marker_.draw(f.projection * f.view, glm::vec3(light), kMarkerColour);
     if (f.on("stencil")) {
       glEnable(GL_STENCIL_TEST);
       glStencilFunc(GL_ALWAYS, kGroundTag, 0xFF);  // drawn after the caster, so only where
@@ -159,15 +160,10 @@ class ProjectedShadows final : public Lesson {
     mesh.draw();
   }
 
-  void drawMarker(const Frame& f, glm::vec3 position) {
-    flat_.set("transform", f.projection * f.view * glm::translate(glm::mat4(1), position));
-    flat_.set("colour", glm::vec4(1.0f, 0.95f, 0.4f, 1.0f));
-    marker_.draw();
-  }
-
   Program lit_, flat_, shadow_;
-  Mesh groundMesh_, holedGroundMesh_, torusMesh_, markerMesh_;  // kept for the oracle's ray cast
-  GpuMesh ground_, holedGround_, torus_, marker_;
+  Mesh groundMesh_, holedGroundMesh_, torusMesh_;  // kept for the oracle's ray cast
+  GpuMesh ground_, holedGround_, torus_;
+  LightMarker marker_;
 
   // ---- test hooks ---------------------------------------------------------------------------------
 
@@ -182,7 +178,8 @@ class ProjectedShadows final : public Lesson {
         light,
         [](std::uint8_t s) { return s == kGroundTag; }};
     if (light.w != 0.0f)
-      check.objects.push_back({&markerMesh_, glm::translate(glm::mat4(1), glm::vec3(light)), false, false});
+      check.objects.push_back(
+          {&marker_.mesh(), glm::translate(glm::mat4(1), glm::vec3(light)), false, false});
     return check;
   }
 };

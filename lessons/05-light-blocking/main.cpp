@@ -18,6 +18,7 @@
 #include "geometry/shapes.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
+#include "gl/light_marker.h"
 #include "gl/shader.h"
 
 using namespace stencil;
@@ -43,13 +44,11 @@ class LightBlocking final : public Lesson {
   LightBlocking()
       : light_("common/light.vert", "common/light.frag"),
         shadow_("common/projected_shadow.vert", "common/flat.frag"),
-        flat_("common/flat.vert", "common/flat.frag"),
         panelMesh_(makePlane(kRoom, 1)),
         torusMesh_(makeTorus(0.7f, 0.25f, 48, 24)),
-        markerMesh_(makeSphere(0.08f, 16, 8)),
         panel_(panelMesh_),
         torus_(torusMesh_),
-        marker_(markerMesh_) {
+        marker_(0.08f, 16, 8) {
     // The ground, a back wall (z = -kRoom) and a left wall (x = -kRoom), from one square.
     const glm::mat4 back = glm::rotate(glm::translate(glm::mat4(1), {0, kRoom, -kRoom}), glm::radians(90.0f),
                                        glm::vec3(1, 0, 0));
@@ -254,16 +253,16 @@ class LightBlocking final : public Lesson {
   }
 
   void drawMarker(const Frame& f, const Light& l) {
-    flat_.set("transform", f.projection * f.view * glm::translate(glm::mat4(1), glm::vec3(l.position)));
-    flat_.set("colour", glm::vec4(glm::min(l.colour, glm::vec3(1.0f)), 1.0f));
-    marker_.draw();
+    marker_.draw(f.projection * f.view, glm::vec3(l.position),
+                 glm::vec4(glm::min(l.colour, glm::vec3(1.0f)), 1.0f));
   }
 
   static constexpr glm::vec3 kAmbient{0.3f};
 
-  Program light_, shadow_, flat_;
-  Mesh panelMesh_, torusMesh_, markerMesh_;  // kept for the oracle's ray cast
-  GpuMesh panel_, torus_, marker_;
+  Program light_, shadow_;
+  Mesh panelMesh_, torusMesh_;  // kept for the oracle's ray cast
+  GpuMesh panel_, torus_;
+  LightMarker marker_;
   std::array<Surface, 3> surfaces_;
 
   // ---- test hooks ---------------------------------------------------------------------------------
@@ -278,7 +277,7 @@ class LightBlocking final : public Lesson {
     return ShadowCheck{
         {{&torusMesh_, casterModel(f), true, false},
          {&panelMesh_, surfaces_[0].model, false, true},
-         {&markerMesh_, glm::translate(glm::mat4(1), glm::vec3(light.position)), false, false}},
+         {&marker_.mesh(), glm::translate(glm::mat4(1), glm::vec3(light.position)), false, false}},
         light.position,
         [tag](std::uint8_t s) { return s == tag; }};
   }

@@ -19,6 +19,8 @@
 #include "geometry/shapes.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
+#include "gl/light_marker.h"
+#include "gl/light_shading.h"
 #include "gl/shader.h"
 
 using namespace stencil;
@@ -28,6 +30,7 @@ namespace {
 constexpr glm::vec4 kLight{1.6f, 5.0f, 1.2f, 1.0f};  // a point light, still; the casters turn
 constexpr glm::vec3 kAmbient{0.25f};
 constexpr glm::vec3 kLightColour{1.2f, 1.15f, 1.0f};
+constexpr glm::vec4 kMarkerColour{1.0f, 0.95f, 0.7f, 1.0f};
 
 struct Object {
   const Mesh* mesh;
@@ -42,17 +45,14 @@ class InvertShadowVolumes final : public Lesson {
   InvertShadowVolumes()
       : light_("common/light.vert", "common/light.frag"),
         volume_("common/volume.vert", "common/flat.frag"),
-        flat_("common/flat.vert", "common/flat.frag"),
         groundMesh_(makePlane(3.0f)),
         cubeMesh_(makeCube(0.45f)),
         ballMesh_(makeSphere(0.35f, 16, 8)),
         frameMesh_(makeSquareRing(0.6f, 0.3f)),
-        markerMesh_(makeSphere(0.08f, 12, 6)),
         ground_(groundMesh_),
         cube_(cubeMesh_),
         ball_(ballMesh_),
         frame_(frameMesh_),
-        marker_(markerMesh_),
         cubeCaster_(prepareCaster(cubeMesh_)),
         ballCaster_(prepareCaster(ballMesh_)),
         frameCaster_(prepareCaster(frameMesh_)) {}
@@ -68,7 +68,7 @@ class InvertShadowVolumes final : public Lesson {
     glDepthFunc(GL_LESS);
     glDisable(GL_STENCIL_TEST);
     drawScene(f, scene, kLightColour);
-    drawMarker(f);
+    marker_.draw(f.projection * f.view, glm::vec3(kLight), kMarkerColour);
     f.pass("lit");
     if (!f.on("shadow")) return;
 
@@ -165,12 +165,11 @@ class InvertShadowVolumes final : public Lesson {
   }
 
   void drawScene(const Frame& f, const std::vector<Object>& scene, glm::vec3 lightColour) {
-    light_.set("viewProjection", f.projection * f.view);
-    light_.set("ambient", kAmbient);
-    light_.set("light", kLight);
-    light_.set("lightColour", lightColour);
-    light_.set("eye", f.eye);
-    light_.set("shininess", 32.0f);
+    setLightShading(light_, {.viewProjection = f.projection * f.view,
+                             .eye = f.eye,
+                             .light = kLight,
+                             .lightColour = lightColour,
+                             .ambient = kAmbient});
     for (const Object& o : scene) {
       if (o.twoSided)
         glDisable(GL_CULL_FACE);  // the cut-out has no back to hide
@@ -183,15 +182,10 @@ class InvertShadowVolumes final : public Lesson {
     glDisable(GL_CULL_FACE);
   }
 
-  void drawMarker(const Frame& f) {
-    flat_.set("transform", f.projection * f.view * glm::translate(glm::mat4(1), glm::vec3(kLight)));
-    flat_.set("colour", glm::vec4(1.0f, 0.95f, 0.7f, 1.0f));
-    marker_.draw();
-  }
-
-  Program light_, volume_, flat_;
-  Mesh groundMesh_, cubeMesh_, ballMesh_, frameMesh_, markerMesh_;
-  GpuMesh ground_, cube_, ball_, frame_, marker_;
+  Program light_, volume_;
+  Mesh groundMesh_, cubeMesh_, ballMesh_, frameMesh_;
+  GpuMesh ground_, cube_, ball_, frame_;
+  LightMarker marker_;
   PreparedCaster cubeCaster_, ballCaster_, frameCaster_;
   GpuTriangles volumeGpu_[2];
   std::vector<glm::mat4> volumeModels_;

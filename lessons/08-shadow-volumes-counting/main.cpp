@@ -18,6 +18,8 @@
 #include "geometry/shapes.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
+#include "gl/light_marker.h"
+#include "gl/light_shading.h"
 #include "gl/shader.h"
 
 using namespace stencil;
@@ -26,6 +28,7 @@ namespace {
 
 constexpr glm::vec3 kAmbient{0.25f};
 constexpr glm::vec3 kLightColour{1.2f, 1.15f, 1.0f};
+constexpr glm::vec4 kMarkerColour{1.0f, 0.95f, 0.7f, 1.0f};
 
 struct Object {
   const Mesh* mesh;
@@ -39,17 +42,14 @@ class CountingShadowVolumes final : public Lesson {
   CountingShadowVolumes()
       : light_("common/light.vert", "common/light.frag"),
         volume_("common/volume.vert", "common/flat.frag"),
-        flat_("common/flat.vert", "common/flat.frag"),
         groundMesh_(makePlane(3.0f)),
         cubeMesh_(makeCube(0.45f)),
         torusMesh_(makeTorus(0.5f, 0.17f, 32, 12)),
         ballMesh_(makeSphere(0.35f, 16, 8)),
-        markerMesh_(makeSphere(0.08f, 12, 6)),
         ground_(groundMesh_),
         cube_(cubeMesh_),
         torus_(torusMesh_),
         ball_(ballMesh_),
-        marker_(markerMesh_),
         cubeCaster_(prepareCaster(cubeMesh_)),
         torusCaster_(prepareCaster(torusMesh_)),
         ballCaster_(prepareCaster(ballMesh_)) {}
@@ -67,7 +67,7 @@ class CountingShadowVolumes final : public Lesson {
     glDisable(GL_STENCIL_TEST);
     glEnable(GL_CULL_FACE);  // every object is closed, or a wall seen from its front
     drawScene(f, scene, light, kLightColour);
-    drawMarker(f, light);
+    marker_.draw(f.projection * f.view, glm::vec3(light), kMarkerColour);
     f.pass("lit");
     if (!f.on("shadow")) {
       glDisable(GL_CULL_FACE);
@@ -178,12 +178,11 @@ class CountingShadowVolumes final : public Lesson {
   }
 
   void drawScene(const Frame& f, const std::vector<Object>& scene, glm::vec4 light, glm::vec3 lightColour) {
-    light_.set("viewProjection", f.projection * f.view);
-    light_.set("ambient", kAmbient);
-    light_.set("light", light);
-    light_.set("lightColour", lightColour);
-    light_.set("eye", f.eye);
-    light_.set("shininess", 32.0f);
+    setLightShading(light_, {.viewProjection = f.projection * f.view,
+                             .eye = f.eye,
+                             .light = light,
+                             .lightColour = lightColour,
+                             .ambient = kAmbient});
     for (const Object& o : scene) {
       light_.set("model", o.model);
       light_.set("colour", o.colour);
@@ -191,15 +190,10 @@ class CountingShadowVolumes final : public Lesson {
     }
   }
 
-  void drawMarker(const Frame& f, glm::vec4 light) {
-    flat_.set("transform", f.projection * f.view * glm::translate(glm::mat4(1), glm::vec3(light)));
-    flat_.set("colour", glm::vec4(1.0f, 0.95f, 0.7f, 1.0f));
-    marker_.draw();
-  }
-
-  Program light_, volume_, flat_;
-  Mesh groundMesh_, cubeMesh_, torusMesh_, ballMesh_, markerMesh_;
-  GpuMesh ground_, cube_, torus_, ball_, marker_;
+  Program light_, volume_;
+  Mesh groundMesh_, cubeMesh_, torusMesh_, ballMesh_;
+  GpuMesh ground_, cube_, torus_, ball_;
+  LightMarker marker_;
   PreparedCaster cubeCaster_, torusCaster_, ballCaster_;
   GpuTriangles volumeGpu_[2];
   std::vector<glm::mat4> volumeModels_;

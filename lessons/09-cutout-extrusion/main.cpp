@@ -32,6 +32,7 @@
 #include "geometry/weld.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
+#include "gl/light_marker.h"
 #include "gl/shader.h"
 
 using namespace stencil;
@@ -43,6 +44,7 @@ constexpr GLint kGroundTag = 0x80;     // the top bit: visible ground, for the p
 constexpr float kFlatHeight = 0.2f;    // the plane the teapot is flattened onto, just above the floor
 constexpr float kMatrixReach = 60.0f;  // how far the matrix pushes away from a directional light
 constexpr glm::vec3 kAmbient{0.3f};
+constexpr glm::vec4 kMarkerColour{1.0f, 0.95f, 0.4f, 1.0f};
 
 // What one object needs: its mesh as drawn, and as a caster (welded, its edges' faces).
 struct Caster {
@@ -57,15 +59,13 @@ class CutoutExtrusion final : public Lesson {
  public:
   CutoutExtrusion()
       : light_("common/light.vert", "common/light.frag"),
-        flat_("common/flat.vert", "common/flat.frag"),
         volume_("common/volume.vert", "common/flat.frag"),
         blend_("09-cutout-extrusion/blend_extrude.vert", "common/flat.frag"),
         planar_("common/projected_shadow.vert", "common/flat.frag"),
         groundMesh_(makePlane(3.0f, 1)),
-        markerMesh_(makeSphere(0.06f, 12, 6)),
         teapot_(makeTeapot()),
         ground_(groundMesh_),
-        marker_(markerMesh_),
+        marker_(0.06f, 12, 6),
         teapotGpu_(teapot_.drawn) {}
 
   void render(Frame& f) override {
@@ -81,7 +81,7 @@ class CutoutExtrusion final : public Lesson {
     glStencilFunc(GL_ALWAYS, kGroundTag, 0xFF);  // the reference is the ground's tag...
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);      // ...written only in figure 14 (drawScene)
     drawScene(f, light, true, f.option("teapot") == kPlanar);
-    if (light.w != 0.0f) drawMarker(f, glm::vec3(light));
+    if (light.w != 0.0f) marker_.draw(f.projection * f.view, glm::vec3(light), kMarkerColour);
     f.pass("lit");
     if (!f.on("shadow")) return;
 
@@ -338,18 +338,14 @@ class CutoutExtrusion final : public Lesson {
     glDisable(GL_CLIP_DISTANCE1);
   }
 
-  void drawMarker(const Frame& f, glm::vec3 position) {
-    flat_.set("transform", f.projection * f.view * glm::translate(glm::mat4(1), position));
-    flat_.set("colour", glm::vec4(1.0f, 0.95f, 0.4f, 1.0f));
-    marker_.draw();
-  }
-
-  Program light_, flat_, volume_, blend_, planar_;
-  Mesh groundMesh_, markerMesh_;  // kept for the oracle's ray cast
+  Program light_, volume_, blend_, planar_;
+  Mesh groundMesh_;  // kept for the oracle's ray cast
   Caster teapot_;
   std::unique_ptr<Caster> logo_, sphere_;
   int logoHoles_ = 0, sphereSlices_ = 0;
-  GpuMesh ground_, marker_, teapotGpu_;
+  GpuMesh ground_;
+  LightMarker marker_;
+  GpuMesh teapotGpu_;
   std::unique_ptr<GpuMesh> logoGpu_, sphereGpu_;
   GpuTriangles logoVolume_, prism_, doubled_, objectVolume_;
   glm::vec4 logoLight_{0.0f};
@@ -380,7 +376,7 @@ class CutoutExtrusion final : public Lesson {
           {&sphere_->drawn, glm::translate(glm::mat4(1), kSphereCentre), objectCasts, !objectCasts});
     if (check.light.w != 0.0f)
       check.objects.push_back(
-          {&markerMesh_, glm::translate(glm::mat4(1), glm::vec3(check.light)), false, false});
+          {&marker_.mesh(), glm::translate(glm::mat4(1), glm::vec3(check.light)), false, false});
     return check;
   }
 };

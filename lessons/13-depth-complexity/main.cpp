@@ -44,6 +44,7 @@
 #include "gl/doubled_caster.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
+#include "gl/light_shading.h"
 #include "gl/overlay.h"
 #include "gl/shader.h"
 #include "gl/stencil_view.h"
@@ -221,12 +222,12 @@ class DepthComplexity final : public Lesson {
   void drawShaded(const Frame& f, const Scene& scene) {
     const SceneLight light =
         scene.lights.empty() ? SceneLight{{3.0f, 6.0f, 4.0f, 1.0f}} : scene.lights.front();
-    light_.set("viewProjection", f.projection * f.view);
-    light_.set("ambient", scene.ambient + glm::vec3(0.15f));
-    light_.set("light", light.position);
-    light_.set("lightColour", light.colour);
-    light_.set("eye", f.eye);
-    light_.set("shininess", 24.0f);
+    setLightShading(light_, {.viewProjection = f.projection * f.view,
+                             .eye = f.eye,
+                             .light = light.position,
+                             .lightColour = light.colour,
+                             .ambient = scene.ambient + glm::vec3(0.15f),
+                             .shininess = 24.0f});
     for (const SceneObject& o : scene.objects) {
       light_.set("model", o.modelAt(f.time));
       light_.set("colour", o.colour);

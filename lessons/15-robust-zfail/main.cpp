@@ -35,6 +35,7 @@
 #include "gl/errors.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
+#include "gl/light_shading.h"
 #include "gl/shader.h"
 
 using namespace stencil;
@@ -359,14 +360,14 @@ class RobustZFail final : public Lesson {
 
   void drawScene(const Frame& f, const std::vector<glm::mat4>& models, glm::vec3 ambient, glm::vec4 light,
                  glm::vec3 lightColour, float radius) {
-    light_.set("viewProjection", depth_.projection * f.view);
-    light_.set("ambient", ambient);
-    light_.set("light", light);
-    light_.set("lightColour", lightColour);
-    light_.set("radius", std::isinf(radius) ? 1e30f : radius);  // the light's bounds (docs/scenes.md)
-    light_.set("twoSided", 1);  // a wall seen from inside a room is lit on the side the eye sees
-    light_.set("eye", f.eye);
-    light_.set("shininess", 32.0f);
+    // The light's bounds (docs/scenes.md); a wall seen from inside a room is lit on the side the eye sees.
+    setLightShading(light_, {.viewProjection = depth_.projection * f.view,
+                             .eye = f.eye,
+                             .light = light,
+                             .lightColour = lightColour,
+                             .ambient = ambient,
+                             .radius = radius,
+                             .twoSided = true});
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
       light_.set("model", models[i]);
       light_.set("colour", scene_.objects[i].colour);

@@ -14,6 +14,7 @@
 #include "geometry/shapes.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
+#include "gl/light_shading.h"
 #include "gl/shader.h"
 
 using namespace stencil;
@@ -76,15 +77,14 @@ class SceneLesson : public Lesson {
       glDepthMask(GL_FALSE);
       glEnable(GL_STENCIL_TEST);
       glStencilFunc(GL_ALWAYS, 0, 0xFF);
-      if (frame.on("zpass")) {
-        // z-pass: count the faces in front of the visible surface, entering up, leaving down.
-        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
-        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
-      } else {
-        glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
-        glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
-        glEnable(GL_DEPTH_CLAMP);  // the dark caps lie at infinity, beyond a finite far plane
-      }
+      // z-pass (variant z-pass) counts the faces in front of the visible surface, where the depth
+      // test passes: a front face enters a volume (up), a back face leaves one (down). z-fail counts
+      // those behind it, where the test fails, the other way round.
+      const bool zpass = frame.on("zpass");
+      const GLenum front = zpass ? GL_INCR_WRAP : GL_DECR_WRAP, back = zpass ? GL_DECR_WRAP : GL_INCR_WRAP;
+      glStencilOpSeparate(GL_FRONT, GL_KEEP, zpass ? GL_KEEP : front, zpass ? front : GL_KEEP);
+      glStencilOpSeparate(GL_BACK, GL_KEEP, zpass ? GL_KEEP : back, zpass ? back : GL_KEEP);
+      if (!zpass) glEnable(GL_DEPTH_CLAMP);  // the dark caps lie at infinity, beyond a finite far plane
       // A light cap lies on its caster's surface: pushed back a little, it always counts as behind
       // it (whichever shader computed which depth), so a lit surface does not shadow itself.
       glEnable(GL_POLYGON_OFFSET_FILL);
@@ -132,13 +132,11 @@ class SceneLesson : public Lesson {
  private:
   void drawObjects(Frame& frame, const glm::mat4& viewProjection, const glm::vec4& light,
                    const glm::vec3& ambient, const glm::vec3& lightColour) {
-    shaded_.use();
-    shaded_.set("viewProjection", viewProjection);
-    shaded_.set("light", light);
-    shaded_.set("ambient", ambient);
-    shaded_.set("lightColour", lightColour);
-    shaded_.set("eye", frame.eye);
-    shaded_.set("shininess", 32.0f);
+    setLightShading(shaded_, {.viewProjection = viewProjection,
+                              .eye = frame.eye,
+                              .light = light,
+                              .lightColour = lightColour,
+                              .ambient = ambient});
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
       const SceneObject& o = scene_.objects[i];
       shaded_.set("model", o.modelAt(frame.time));

@@ -15,28 +15,13 @@
 #include "gl/framebuffer.h"
 #include "gl/gpu_mesh.h"
 #include "gl/shader.h"
+#include "gl_fixture.h"
 
 using namespace stencil;
 
 namespace {
 
-class AccumulationTargetTest : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    try {
-      context = createContext(osmesaAvailable() ? Backend::Osmesa : Backend::Egl, 64, 64, "test");
-    } catch (const std::exception& e) {
-      reason = e.what();
-    }
-  }
-  static void TearDownTestSuite() { context.reset(); }
-  void SetUp() override {
-    if (!context) GTEST_SKIP() << "no GL context: " << reason;
-  }
-
-  static inline std::unique_ptr<Context> context;
-  static inline std::string reason;
-};
+class AccumulationTargetTest : public GlFixture {};
 
 // The red level, 0..255, that `terms` passes of `value` each leave once added up in a target of
 // `format` by additive blending (a rectangle over the whole target per pass) and copied into an

@@ -24,29 +24,13 @@
 #include "gl/gpu_mesh.h"
 #include "gl/recorder.h"
 #include "gl/shader.h"
+#include "gl_fixture.h"
 
 using namespace stencil;
 
 namespace {
 
-class Gl : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    try {
-      context = createContext(osmesaAvailable() ? Backend::Osmesa : Backend::Egl, 64, 64, "test");
-      enableDebugOutput(context->features());
-    } catch (const std::exception& e) {
-      reason = e.what();
-    }
-  }
-  static void TearDownTestSuite() { context.reset(); }
-  void SetUp() override {
-    if (!context) GTEST_SKIP() << "no GL context: " << reason;
-  }
-
-  static inline std::unique_ptr<Context> context;
-  static inline std::string reason;
-};
+class Gl : public GlFixture {};
 
 }  // namespace
 

@@ -21,10 +21,11 @@ import json
 import pathlib
 import resource
 import struct
-import subprocess
 import sys
 import tempfile
 import zlib
+
+from lesson_run import run
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 PATTERNS = ["white noise", "Bayer", "blue noise", "linear wipe", "radial wipe", "clock wipe", "painted"]
@@ -82,13 +83,6 @@ def write_png(path, width, height, rows):
     raw = b"".join(b"\0" + bytes(r) for r in rows)
     path.write_bytes(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0))
                      + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
-
-
-def run(exe, args):
-    out = subprocess.run([str(exe), "--headless", "--quiet"] + args, capture_output=True, text=True)
-    if out.returncode != 0:
-        sys.exit(f"{exe} {' '.join(args)}: exit {out.returncode}: {out.stderr.strip()}")
-    return out.stdout
 
 
 def stats(exe, args):

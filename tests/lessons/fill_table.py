@@ -9,21 +9,13 @@ at 255+), lesson 13's sum falls short: the cell shows lesson 16's figure, marked
 
     tests/lessons/fill_table.py BUILD_DIR [SIZE]    # SIZE 640x480 by default
 """
-import json
 import pathlib
-import subprocess
 import sys
+
+from lesson_run import stats
 
 METHODS = ["McGuire", "Everitt-Kilgard", "Lengyel", "z-pass"]
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-
-
-def stats(exe, args):
-    out = subprocess.run([str(exe), "--headless", "--quiet", "--time", "1", "--stats"]
-                         + args, capture_output=True, text=True)
-    if out.returncode != 0:
-        sys.exit(f"{exe} {' '.join(args)}: exit {out.returncode}: {out.stderr.strip()}")
-    return json.loads(out.stdout)
 
 
 def main():

@@ -8,23 +8,15 @@ timer can be trusted).
 
     tests/lessons/halo_table.py BUILD_DIR [SIZE] [--backend B]    # SIZE 640x480 by default
 """
-import json
 import pathlib
 import statistics
-import subprocess
 import sys
+
+from lesson_run import stats
 
 METHODS = ["whole object scaled (paper)", "each convex piece grown (paper's fix)", "pushed along normals",
            "outline moved k pixels (screen)"]
 RUNS, FRAMES = 5, 20
-
-
-def stats(exe, args):
-    out = subprocess.run([str(exe), "--headless", "--quiet", "--time", "1", "--stats"]
-                         + args, capture_output=True, text=True)
-    if out.returncode != 0:
-        sys.exit(f"{exe} {' '.join(args)}: exit {out.returncode}: {out.stderr.strip()}")
-    return json.loads(out.stdout)
 
 
 def halo_pass(s):
