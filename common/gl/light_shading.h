@@ -14,8 +14,8 @@ namespace stencil {
 struct LightShading {
   glm::mat4 viewProjection{1.0f};  // world to clip, the matrix the frame draws with
   glm::vec3 eye{0.0f};             // world, for the highlight
-  glm::vec4 light{0.0f, 1.0f, 0.0f,
-                  0.0f};        // world homogeneous: w = 1 a point, w = 0 the direction towards it
+  // World, homogeneous: w = 1 a point, w = 0 the direction towards the light.
+  glm::vec4 light{0.0f, 1.0f, 0.0f, 0.0f};
   glm::vec3 lightColour{0.0f};  // 0 turns the light off
   glm::vec3 ambient{0.0f};
   float shininess = 32.0f;  // Blinn-Phong exponent
