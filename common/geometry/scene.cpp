@@ -12,8 +12,11 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <glm/gtc/matrix_transform.hpp>
+#include <limits>
 #include <map>
+#include <numbers>
 #include <set>
 #include <sstream>
 
@@ -423,10 +426,21 @@ class LineReader {
     const float x = number(what + " x"), y = number(what + " y"), z = number(what + " z");
     return {x, y, z};
   }
+  // A unit vector, normalised in double: a float's squared length overflows past 1.8e19 and
+  // underflows below 1e-19, and neither says anything about the direction.
   glm::vec3 direction(const std::string& what) {
-    const glm::vec3 d = vec3(what);
-    if (glm::length(d) == 0.0f) fail("expected " + what + " to be a direction, got 0 0 0");
-    return glm::normalize(d);
+    const glm::dvec3 d(vec3(what));
+    const double length = glm::length(d);
+    if (length == 0.0) fail("expected " + what + " to be a direction, got 0 0 0");
+    return glm::vec3(d / length);
+  }
+  // A point within kMaxSceneCoordinate of the origin on each axis.
+  glm::vec3 point(const std::string& what) {
+    const glm::vec3 p = vec3(what);
+    if (glm::any(glm::greaterThan(glm::abs(p), glm::vec3(kMaxSceneCoordinate))))
+      fail("expected " + what + " within " + format(kMaxSceneCoordinate) + " of the origin on each axis, got " +
+           format(p.x) + " " + format(p.y) + " " + format(p.z));
+    return p;
   }
   glm::vec3 colour() {
     const float r = number("the colour's R"), g = number("the colour's G"), b = number("the colour's B");
@@ -471,7 +485,8 @@ class ShapeParams {
       values_[key] = numbers(line);
     }
   }
-  float positive(const std::string& key, float fallback) { return get(key, fallback, true); }
+  // A size in scene units, within kMinSceneScale..kMaxSceneCoordinate.
+  float size(const std::string& key, float fallback) { return sized(key, get(key, fallback, true)); }
   int count(const std::string& key, int fallback, int minimum) {
     if (!values_.count(key)) return fallback;
     const float v = get(key, 0.0f, false);
@@ -486,6 +501,9 @@ class ShapeParams {
     const std::vector<float>& v = values_[key];
     if (v.size() != 1 && v.size() != 3)
       line_.fail("expected one or three numbers after " + key + ", got " + std::to_string(v.size()));
+    for (const float h : v)
+      if (!(h > 0.0f)) line_.fail("expected " + key + " sizes greater than 0, got " + LineReader::format(h));
+    for (const float h : v) sized(key, h);
     return v.size() == 3 ? glm::vec3(v[0], v[1], v[2]) : glm::vec3(v[0]);
   }
 
@@ -511,6 +529,21 @@ class ShapeParams {
     return v[0];
   }
 
+  float sized(const std::string& key, float v) const {
+    if (v < kMinSceneScale || v > kMaxSceneCoordinate)
+      line_.fail("expected " + key + " from " + LineReader::format(kMinSceneScale) + " to " +
+                 LineReader::format(kMaxSceneCoordinate) + " scene units, got " + shortest(v));
+    return v;
+  }
+
+  // The number as the file may have written it: the shortest text that reads back as this float
+  // (1e-40, where six digits would say 9.99995e-41).
+  static std::string shortest(float v) {
+    char text[32];
+    const auto [end, ec] = std::to_chars(text, text + sizeof text, v);
+    return ec == std::errc() ? std::string(text, end) : LineReader::format(v);
+  }
+
   LineReader& line_;
   std::set<std::string> seen_;
   std::map<std::string, std::vector<float>> values_;
@@ -530,7 +563,7 @@ ObjMesh readShape(LineReader& line, const std::string& shape, const std::filesys
   const auto made = [](Mesh mesh) { return ObjMesh{std::move(mesh), {}}; };
   if (shape == "plane") {
     ShapeParams p(line, shape, {"half", "divisions"});
-    const float half = p.positive("half", 5.0f);
+    const float half = p.size("half", 5.0f);
     const int divisions = p.count("divisions", 1, 1);
     fits(2.0 * divisions * divisions);
     return made(makePlane(half, divisions));
@@ -538,20 +571,21 @@ ObjMesh readShape(LineReader& line, const std::string& shape, const std::filesys
   if (shape == "box") {
     ShapeParams p(line, shape, {"half"});
     const glm::vec3 half = p.half("half", 0.5f);
-    if (glm::any(glm::lessThanEqual(half, glm::vec3(0.0f)))) line.fail("expected half sizes greater than 0");
     fits(12.0);
-    return made(transformed(makeCube(1.0f), glm::scale(glm::mat4(1.0f), half)));
+    Mesh box = makeCube(1.0f);  // faces on the axes: scaling its corners keeps its normals
+    for (glm::vec3& position : box.positions) position *= half;
+    return made(std::move(box));
   }
   if (shape == "sphere") {
     ShapeParams p(line, shape, {"radius", "slices", "stacks"});
-    const float radius = p.positive("radius", 1.0f);
+    const float radius = p.size("radius", 1.0f);
     const int slices = p.count("slices", 32, 3), stacks = p.count("stacks", 16, 2);
     fits(2.0 * slices * (stacks - 1));
     return made(makeSphere(radius, slices, stacks));
   }
   if (shape == "cylinder" || shape == "cone") {
     ShapeParams p(line, shape, {"radius", "height", "slices"});
-    const float radius = p.positive("radius", 0.5f), height = p.positive("height", 1.0f);
+    const float radius = p.size("radius", 0.5f), height = p.size("height", 1.0f);
     const int slices = p.count("slices", 32, 3);
     fits((shape == "cylinder" ? 4.0 : 2.0) * slices);
     return made(shape == "cylinder" ? makeCylinder(radius, height, slices)
@@ -559,7 +593,7 @@ ObjMesh readShape(LineReader& line, const std::string& shape, const std::filesys
   }
   if (shape == "torus") {
     ShapeParams p(line, shape, {"major", "minor", "segments", "sides"});
-    const float major = p.positive("major", 1.0f), minor = p.positive("minor", 0.25f);
+    const float major = p.size("major", 1.0f), minor = p.size("minor", 0.25f);
     if (!(minor < major)) line.fail("expected the torus's minor radius less than its major radius");
     const int segments = p.count("segments", 32, 3), sides = p.count("sides", 16, 3);
     fits(2.0 * segments * sides);
@@ -568,8 +602,7 @@ ObjMesh readShape(LineReader& line, const std::string& shape, const std::filesys
   if (shape == "stairs") {
     ShapeParams p(line, shape, {"steps", "width", "rise", "run"});
     const int steps = p.count("steps", 5, 1);
-    const float width = p.positive("width", 1.0f), rise = p.positive("rise", 0.2f),
-                run = p.positive("run", 0.3f);
+    const float width = p.size("width", 1.0f), rise = p.size("rise", 0.2f), run = p.size("run", 0.3f);
     fits(12.0 * steps);
     return made(makeStairs(steps, width, rise, run));
   }
@@ -603,10 +636,10 @@ void readCamera(LineReader& line, SceneCamera& camera) {
     const std::string key = line.word("a camera setting");
     if (!seen.insert(key).second) line.fail("camera setting " + quote(key) + " given twice");
     if (key == "eye") {
-      camera.eye = line.vec3("the eye");
+      camera.eye = line.point("the eye");
       eye = true;
     } else if (key == "target") {
-      camera.target = line.vec3("the target");
+      camera.target = line.point("the target");
       target = true;
     } else if (key == "up") {
       const glm::vec3 up = line.direction("the up direction");
@@ -677,7 +710,7 @@ void readSun(LineReader& line, SceneLight& light, bool sunMayBeDown) {
 void readLight(LineReader& line, SceneLight& light, bool sunMayBeDown) {
   const std::string type = line.word("the light's type (point, directional or sun)");
   if (type == "point")
-    light.position = glm::vec4(line.vec3("the light's position"), 1.0f);
+    light.position = glm::vec4(line.point("the light's position"), 1.0f);
   else if (type == "directional")
     light.position = glm::vec4(line.direction("the direction towards the light"), 0.0f);
   else if (type == "sun")
@@ -697,6 +730,75 @@ void readLight(LineReader& line, SceneLight& light, bool sunMayBeDown) {
       line.fail("unknown light setting " + quote(key) + "; expected color" +
                 (type == "point" ? " or radius" : ""));
   }
+}
+
+// The singular values of a 3x3 matrix, largest first, in double: the square roots of the
+// eigenvalues of M^T M, a symmetric matrix, by the closed form for its characteristic cubic
+// (Smith, "Eigenvalues of a symmetric 3x3 matrix", CACM 4(4), 1961).
+glm::dvec3 singularValues(const glm::dmat3& m) {
+  const glm::dmat3 a = glm::transpose(m) * m;
+  const double p1 = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+  const double q = (a[0][0] + a[1][1] + a[2][2]) / 3.0;
+  glm::dvec3 eig;
+  if (p1 == 0.0) {
+    eig = {a[0][0], a[1][1], a[2][2]};
+  } else {
+    const double p2 = (a[0][0] - q) * (a[0][0] - q) + (a[1][1] - q) * (a[1][1] - q) +
+                      (a[2][2] - q) * (a[2][2] - q) + 2.0 * p1;
+    const double p = std::sqrt(p2 / 6.0);
+    const glm::dmat3 b = (a - q * glm::dmat3(1.0)) / p;
+    const double r = std::clamp(glm::determinant(b) / 2.0, -1.0, 1.0);
+    const double phi = std::acos(r) / 3.0;
+    eig.x = q + 2.0 * p * std::cos(phi);
+    eig.z = q + 2.0 * p * std::cos(phi + 2.0 * std::numbers::pi / 3.0);
+    eig.y = 3.0 * q - eig.x - eig.z;
+  }
+  std::sort(&eig.x, &eig.x + 3, std::greater<>());
+  return glm::sqrt(glm::max(eig, glm::dvec3(0.0)));
+}
+
+// What an object's transforms and motion make of it, checked at the line that sets them, so a
+// scene that would break the float maths later is refused there (the limits in scene.h): the
+// model matrix's stretch (its singular values) within kMinSceneScale..kMaxSceneCoordinate, a
+// spin whose angle stays finite up to kMaxSceneTime, and every point the object reaches at any
+// time within kMaxSceneCoordinate of the origin (spin turns the shape within its bounding sphere
+// about its origin; bob moves it up to |bob| along y).
+void checkPlacement(const LineReader& line, const SceneObject& o) {
+  const auto fmt = [](double v) { return LineReader::format(static_cast<float>(v)); };
+  const glm::dmat4 model(o.model);
+  const glm::dvec3 sigma = singularValues(glm::dmat3(model));
+  bool finite = true;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) finite &= std::isfinite(model[c][r]);
+  if (!finite || sigma.x > kMaxSceneCoordinate || sigma.z < kMinSceneScale)
+    line.fail("the transforms up to this line scale the object by " + fmt(sigma.z) +
+              (sigma.x != sigma.z ? " to " + fmt(sigma.x) : std::string()) + "; a scene's scales lie within " +
+              fmt(kMinSceneScale) + " to " + fmt(kMaxSceneCoordinate));
+  const float turns = o.spinDegPerSecond * static_cast<float>(kMaxSceneTime);
+  if (!std::isfinite(glm::radians(turns)))
+    line.fail("a spin of " + fmt(o.spinDegPerSecond) + " degrees per second turns past what a float holds by " +
+              fmt(kMaxSceneTime) + " s");
+  glm::dvec3 low(std::numeric_limits<double>::infinity()), high = -low;
+  if (o.spinDegPerSecond != 0.0f) {
+    double radius = 0.0;
+    for (const glm::vec3& p : o.mesh.positions) radius = std::max(radius, glm::length(glm::dvec3(p)));
+    const glm::dvec3 centre(model[3]);
+    low = centre - sigma.x * radius;
+    high = centre + sigma.x * radius;
+  } else {
+    for (const glm::vec3& p : o.mesh.positions) {
+      const glm::dvec3 world(model * glm::dvec4(glm::dvec3(p), 1.0));
+      low = glm::min(low, world);
+      high = glm::max(high, world);
+    }
+  }
+  const glm::dvec3 bob(0.0, std::abs(o.bob), 0.0);
+  const glm::dvec3 far = glm::max(glm::abs(low - bob), glm::abs(high + bob));
+  const double reach = std::max({far.x, far.y, far.z});
+  if (!(reach <= kMaxSceneCoordinate))
+    line.fail("the object reaches " + fmt(reach) + " from the origin" +
+              (o.spinDegPerSecond != 0.0f || o.bob != 0.0f ? " as it moves" : "") + "; a scene lies within " +
+              fmt(kMaxSceneCoordinate) + " of the origin on each axis");
 }
 
 void readObjectLine(LineReader& line, SceneObject& object) {
@@ -728,6 +830,8 @@ void readObjectLine(LineReader& line, SceneObject& object) {
     line.fail("unknown object setting " + quote(key) +
               "; expected translate, rotate, scale, color, casts, receives, spin or bob");
   line.end();
+  if (key == "translate" || key == "rotate" || key == "scale" || key == "spin" || key == "bob")
+    checkPlacement(line, object);
 }
 
 }  // namespace
@@ -765,7 +869,13 @@ void checkCsg(Scene& scene, const std::string& file, std::size_t column) {
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     if (!named[i]) continue;
     const SceneObject& o = scene.objects[i];
-    CasterReport report = o.casts ? o.caster.report : prepareCaster(o.mesh).report;
+    const PreparedCaster prepared = o.casts ? PreparedCaster{} : prepareCaster(o.mesh);
+    const PreparedCaster& caster = o.casts ? o.caster : prepared;
+    const CasterReport& report = caster.report;
+    if (report.closedManifold() && signedVolume(caster.mesh) < 0.0)
+      throw SceneError(where + "csg: object '" + o.name +
+                       "' faces inwards (a solid written inside out): CSG counts a primitive's front "
+                       "faces as where a ray enters it; turn its faces round");
     if (!report.closedManifold())
       throw SceneError(where + "csg: object '" + o.name + "' is not a closed solid (" +
                        std::to_string(report.borderEdges) + " border edges, " +
@@ -843,6 +953,7 @@ Scene parseScene(std::string_view text, const std::filesystem::path& file, const
                   " is not finite: its sizes are too large for a float");
       object.mesh = std::move(meshes.drawn);
       triangles += object.mesh.triangleCount();
+      checkPlacement(line, object);
       scene.objects.push_back(std::move(object));
       casterInputs.push_back(std::move(meshes.shared));
       inObject = true;

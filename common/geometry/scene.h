@@ -43,6 +43,15 @@ inline constexpr std::uintmax_t kMaxObjFileBytes = 64u << 20;
 inline constexpr std::size_t kMaxObjFaceCorners = 256;     // corners of one OBJ face
 inline constexpr float kMaxObjCoordinate = 1e6f;           // |x|, |y|, |z| of an OBJ vertex
 inline constexpr std::size_t kMaxSceneCsgProducts = 4096;  // the csg expression's sum of products
+// Where a scene may put things and how much it may scale them: |x|, |y|, |z| of the camera, a
+// point light and every point of every object (at every time, spin and bob included) within
+// kMaxSceneCoordinate; a shape's sizes and a model matrix's stretch (its singular values) within
+// kMinSceneScale..kMaxSceneCoordinate. A float still resolves a millionth of the largest size,
+// and the matrices, normals and ray casts built from them stay finite and invertible.
+inline constexpr float kMaxSceneCoordinate = 1e6f;
+inline constexpr float kMinSceneScale = 1e-6f;
+// The times a lesson may render a scene at, |t| in seconds (--time's bound, gl/options.h's kMaxTime).
+inline constexpr double kMaxSceneTime = 1e6;
 
 // A sun light's place and clock (`light sun` in a scene file): its position is the direction
 // towards the sun then (solar.h; world +y up, -z north, +x east), at w = 0.

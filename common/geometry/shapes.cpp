@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -345,17 +346,16 @@ Mesh makeStairs(int steps, float width, float rise, float run) {
   };
   Mesh mesh;
   reserve(mesh, 16ull * n + 8, 12ull * n);
-  // One flat face: its own vertices, its triangles turned to face `normal`.
+  // One flat face: its own vertices (found by their grid corner, so a side of n steps is built
+  // in O(n log n)), its triangles turned to face `normal`.
   struct Face {
     Mesh& mesh;
     glm::vec3 normal;
-    std::vector<std::pair<glm::ivec3, std::uint32_t>> vertices{};
+    std::map<std::array<int, 3>, std::uint32_t> vertices{};
     std::uint32_t vertex(const glm::vec3& p, const glm::ivec3& key) {
-      for (const auto& [k, index] : vertices)
-        if (k == key) return index;
-      vertices.emplace_back(key, u32(mesh.positions.size()));
-      addVertex(mesh, p, normal);
-      return vertices.back().second;
+      const auto [it, added] = vertices.try_emplace({key.x, key.y, key.z}, u32(mesh.positions.size()));
+      if (added) addVertex(mesh, p, normal);
+      return it->second;
     }
   };
   auto triangle = [&](Face& face, std::array<glm::ivec3, 3> c) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <glm/vec4.hpp>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -107,21 +108,32 @@ namespace {
 
 // Runs body(i) for i in [0, n) on `threads` threads (0: the hardware's count), in interleaved
 // blocks so neighbouring receivers (similar cost) spread over the threads.
-void parallelFor(std::size_t n, int threads, const std::function<void(std::size_t)>& body) {
+// After each block, progress (when given) hears how many of the n are done, one call at a time.
+void parallelFor(std::size_t n, int threads, const std::function<void(std::size_t)>& body,
+                 const ReferenceProgress& progress = {}) {
   unsigned count =
       threads > 0 ? static_cast<unsigned>(threads) : std::max(1u, std::thread::hardware_concurrency());
   count = static_cast<unsigned>(std::min<std::size_t>(count, std::max<std::size_t>(n, 1)));
+  constexpr std::size_t kBlock = 64;
+  std::mutex reporting;
+  std::size_t done = 0;
+  const auto blocks = [&](unsigned t, unsigned stride) {
+    for (std::size_t start = t * kBlock; start < n; start += stride * kBlock) {
+      const std::size_t end = std::min(n, start + kBlock);
+      for (std::size_t i = start; i < end; ++i) body(i);
+      if (progress) {
+        const std::lock_guard lock(reporting);
+        done += end - start;
+        progress(done, n);
+      }
+    }
+  };
   if (count <= 1) {
-    for (std::size_t i = 0; i < n; ++i) body(i);
+    blocks(0, 1);
     return;
   }
-  constexpr std::size_t kBlock = 64;
   std::vector<std::thread> pool;
-  for (unsigned t = 0; t < count; ++t)
-    pool.emplace_back([&, t] {
-      for (std::size_t start = t * kBlock; start < n; start += count * kBlock)
-        for (std::size_t i = start; i < std::min(n, start + kBlock); ++i) body(i);
-    });
+  for (unsigned t = 0; t < count; ++t) pool.emplace_back([&, t] { blocks(t, count); });
   for (std::thread& th : pool) th.join();
 }
 
@@ -158,7 +170,8 @@ std::vector<float> convergedVisibleFraction(const OcclusionScene& scene, const A
 
 std::vector<float> convergedVisibility(const OcclusionScene& scene, const std::function<bool(int)>& receives,
                                        const AreaLight& light, const glm::mat4& inverseViewProjection,
-                                       glm::ivec2 size, int samples, int threads) {
+                                       glm::ivec2 size, int samples, int threads,
+                                       const ReferenceProgress& progress) {
   if (size.x < 1 || size.y < 1)
     throw std::invalid_argument("converged visibility: image size " + std::to_string(size.x) + "x" +
                                 std::to_string(size.y) + " is empty");
@@ -177,7 +190,7 @@ std::vector<float> convergedVisibility(const OcclusionScene& scene, const std::f
     const auto hit = scene.firstHit(eye);
     if (!hit || !receives(hit->second)) return;
     out[i] = fractionAt(query, light, eye.origin + hit->first * eye.direction, samples, i, 1e-4f);
-  });
+  }, progress);
   return out;
 }
 

@@ -75,8 +75,12 @@ std::vector<float> convergedVisibleFraction(const OcclusionScene& scene, const A
 // inverseViewProjection; where its first hit is an object for which receives(object) is true,
 // the visible fraction at that point (as above, receiver index = pixel index y * size.x + x),
 // else -1. Throws std::invalid_argument for a size below 1 x 1 or samples < 1.
+// progress, when given, is told how many pixels of the whole are done, from the worker threads,
+// one call at a time, after each block of pixels.
+using ReferenceProgress = std::function<void(std::size_t done, std::size_t total)>;
 std::vector<float> convergedVisibility(const OcclusionScene& scene, const std::function<bool(int)>& receives,
                                        const AreaLight& light, const glm::mat4& inverseViewProjection,
-                                       glm::ivec2 size, int samples, int threads = 0);
+                                       glm::ivec2 size, int samples, int threads = 0,
+                                       const ReferenceProgress& progress = {});
 
 }  // namespace stencil

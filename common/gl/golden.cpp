@@ -70,12 +70,12 @@ std::filesystem::path goldenStencilPath(const std::filesystem::path& dir, const 
 }
 
 GoldenResult checkGolden(const Image& colour, const Image& stencil, const std::filesystem::path& dir,
-                         const std::string& name, const std::filesystem::path& artifacts,
+                         const std::string& name, const std::filesystem::path& artifacts, OutputSet& out,
                          const ColourTolerance& tolerance) {
   const auto colourPath = goldenColourPath(dir, name), stencilPath = goldenStencilPath(dir, name);
   if (!std::filesystem::exists(colourPath) || !std::filesystem::exists(stencilPath)) {
-    writePng(artifacts / "colour-actual.png", colour);
-    writePng(artifacts / "stencil-actual.raw.png", stencil);
+    out.addPng(artifacts / "colour-actual.png", colour);
+    out.addPng(artifacts / "stencil-actual.raw.png", stencil);
     return {false, "no golden " + colourPath.string() + " / " + stencilPath.string() +
                        " (see docs/testing.md to create it)"};
   }
@@ -95,13 +95,13 @@ GoldenResult checkGolden(const Image& colour, const Image& stencil, const std::f
       << c.maxChannelDiff << ", allowed " << tolerance.maxFraction * 100 << "%";
   if (passed) return {true, msg.str()};
 
-  writePng(artifacts / "colour-actual.png", colour);
-  writePng(artifacts / "colour-expected.png", expectedColour);
-  writePng(artifacts / "colour-diff.png", c.picture);
-  writePng(artifacts / "stencil-actual.png", stencilRamp(stencil));
-  writePng(artifacts / "stencil-expected.png", stencilRamp(expectedStencil));
-  writePng(artifacts / "stencil-diff.png", s.picture);
-  writePng(artifacts / "stencil-actual.raw.png", stencil);
+  out.addPng(artifacts / "colour-actual.png", colour);
+  out.addPng(artifacts / "colour-expected.png", expectedColour);
+  out.addPng(artifacts / "colour-diff.png", c.picture);
+  out.addPng(artifacts / "stencil-actual.png", stencilRamp(stencil));
+  out.addPng(artifacts / "stencil-expected.png", stencilRamp(expectedStencil));
+  out.addPng(artifacts / "stencil-diff.png", s.picture);
+  out.addPng(artifacts / "stencil-actual.raw.png", stencil);
   std::ostringstream json;
   json << "{\n  \"golden\": \"" << colourPath.string() << "\",\n"
        << "  \"passed\": false,\n"
@@ -113,14 +113,14 @@ GoldenResult checkGolden(const Image& colour, const Image& stencil, const std::f
        << "  \"tolerance\": {\"max_channel_diff\": " << tolerance.maxChannelDiff
        << ", \"max_fraction\": " << tolerance.maxFraction << "},\n"
        << "  \"pixels\": " << s.pixels << "\n}\n";
-  writeFile(artifacts / "summary.json", json.str());
+  out.add(artifacts / "summary.json", json.str());
   return {false, msg.str() + "; images and summary.json in " + artifacts.string()};
 }
 
 void writeGolden(const Image& colour, const Image& stencil, const std::filesystem::path& dir,
-                 const std::string& name) {
-  writePng(goldenColourPath(dir, name), colour);
-  writePng(goldenStencilPath(dir, name), stencil);
+                 const std::string& name, OutputSet& out) {
+  out.addPng(goldenColourPath(dir, name), colour);
+  out.addPng(goldenStencilPath(dir, name), stencil);
 }
 
 bool isGoldenRenderer(const std::string& renderer) {

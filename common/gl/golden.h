@@ -43,11 +43,13 @@ struct GoldenResult {
 std::filesystem::path goldenColourPath(const std::filesystem::path& dir, const std::string& name);
 std::filesystem::path goldenStencilPath(const std::filesystem::path& dir, const std::string& name);
 
-// Compares; on failure writes actual, expected and diff PNGs and summary.json to artifacts.
+// Compares; on failure stages actual, expected and diff PNGs and summary.json under `artifacts`
+// in `out` (written when the caller commits it).
 GoldenResult checkGolden(const Image& colour, const Image& stencil, const std::filesystem::path& dir,
-                         const std::string& name, const std::filesystem::path& artifacts,
+                         const std::string& name, const std::filesystem::path& artifacts, OutputSet& out,
                          const ColourTolerance& = {});
+// Stages the golden pair in `out`.
 void writeGolden(const Image& colour, const Image& stencil, const std::filesystem::path& dir,
-                 const std::string& name);
+                 const std::string& name, OutputSet& out);
 
 }  // namespace stencil

@@ -1,13 +1,19 @@
 #include "gl/image.h"
 
 #include <fcntl.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
 #include <stb_image.h>
 #include <stb_image_write.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <climits>
 #include <cstdio>
 #include <cstring>
+#include <random>
+#include <utility>
 #include <stdexcept>
 
 #include "gl/errors.h"
@@ -57,35 +63,147 @@ void checkFolderCanHoldFiles(const fs::path& dir, const std::string& flag, const
   if (!why.empty()) refuse(flag, path, "cannot create files in " + existing.string() + ": " + why);
 }
 
+// Each name in the path within NAME_MAX bytes and the whole within PATH_MAX: what the system
+// refuses when the file is made, refused before anything is rendered.
+void checkNameLengths(const fs::path& path, const std::string& flag) {
+  for (const fs::path& part : path)
+    if (part.native().size() > NAME_MAX)
+      refuse(flag, path, "the name '" + part.native().substr(0, 24) + "...' is " +
+                             std::to_string(part.native().size()) + " bytes; a file name has at most " +
+                             std::to_string(NAME_MAX));
+  if (fs::absolute(path).native().size() >= PATH_MAX)
+    refuse(flag, path, "the path is " + std::to_string(fs::absolute(path).native().size()) +
+                           " bytes from the root; at most " + std::to_string(PATH_MAX - 1));
+}
+
 [[noreturn]] void cannotWrite(const fs::path& path, const std::string& why) {
   throw OutputError("could not write " + path.string() + ": " + why);
 }
 
 }  // namespace
 
-void writeFile(const fs::path& path, std::string_view bytes) {
-  if (path.empty()) throw OutputError("could not write a file with an empty name");
-  if (path.has_parent_path()) {
+namespace {
+
+// A random name for a file beside the one being written: a dot file, short whatever the
+// target's name, so a name the up-front check passed never fails here for its length.
+std::string randomSiblingName() {
+  static std::random_device device;
+  static const char hex[] = "0123456789abcdef";
+  std::string name = ".stencil-";
+  for (int i = 0; i < 16; ++i) name += hex[device() & 15];
+  return name + ".tmp";
+}
+
+// One staged file while a commit writes it: its descriptor, with no name until `linked`.
+struct Writing {
+  fs::path target, linked;  // linked: the random sibling name it has been given, once it has one
+  int fd = -1;
+  bool renamed = false;
+};
+
+// Makes the folders missing above and at `dir`, outermost first, recording each one made.
+void makeFolders(const fs::path& dir, const fs::path& forFile, std::vector<fs::path>& made) {
+  if (dir.empty()) return;
+  std::vector<fs::path> missing;
+  for (fs::path d = dir; !d.empty(); d = d.parent_path()) {
     std::error_code ec;
-    fs::create_directories(path.parent_path(), ec);
-    if (ec) cannotWrite(path, ec.message());
+    if (fs::exists(fs::symlink_status(d, ec)) || d == d.root_path()) break;
+    missing.push_back(d);
+    if (d.parent_path() == d) break;
   }
-  fs::path temporary = path;
-  temporary += ".tmp-" + std::to_string(getpid());
-  std::FILE* file = std::fopen(temporary.c_str(), "wb");
-  if (!file) cannotWrite(path, std::strerror(errno));
-  int error = 0;
-  if (std::fwrite(bytes.data(), 1, bytes.size(), file) != bytes.size() || std::fflush(file) != 0)
-    error = errno;
-  if (std::fclose(file) != 0 && error == 0) error = errno;
-  if (error == 0 && std::rename(temporary.c_str(), path.c_str()) != 0) error = errno;
-  if (error != 0) {
-    std::remove(temporary.c_str());
-    cannotWrite(path, std::strerror(error));
+  for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+    if (mkdir(it->c_str(), 0777) != 0) cannotWrite(forFile, it->string() + ": " + std::strerror(errno));
+    made.push_back(*it);
   }
 }
 
-void writePng(const fs::path& path, const Image& image) {
+// Opens a file with no name in `dir` (O_TMPFILE). Where the file system cannot, a new file at a
+// random name that no link may stand at (O_EXCL), recorded in `linked` for removal.
+int openUnnamed(const fs::path& dir, fs::path& linked) {
+  const fs::path folder = dir.empty() ? fs::path(".") : dir;
+  int fd = open(folder.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+  if (fd >= 0 || (errno != EOPNOTSUPP && errno != EISDIR && errno != EINVAL)) return fd;
+  for (int attempt = 0; attempt < 16; ++attempt) {
+    const fs::path name = folder / randomSiblingName();
+    fd = open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (fd >= 0) {
+      linked = name;
+      return fd;
+    }
+    if (errno != EEXIST) return -1;
+  }
+  return -1;
+}
+
+bool writeAll(int fd, std::string_view bytes) {
+  while (!bytes.empty()) {
+    const ssize_t n = write(fd, bytes.data(), bytes.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      if (n == 0) errno = EIO;
+      return false;
+    }
+    bytes.remove_prefix(static_cast<std::size_t>(n));
+  }
+  return true;
+}
+
+// Gives an unnamed file (O_TMPFILE) a random name beside its target: linkat never replaces an
+// existing name, so a name someone planted is skipped, never followed.
+bool giveName(Writing& w) {
+  const std::string self = "/proc/self/fd/" + std::to_string(w.fd);
+  const fs::path folder = w.target.has_parent_path() ? w.target.parent_path() : fs::path(".");
+  for (int attempt = 0; attempt < 16; ++attempt) {
+    const fs::path name = folder / randomSiblingName();
+    if (linkat(AT_FDCWD, self.c_str(), AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) == 0) {
+      w.linked = name;
+      return true;
+    }
+    if (errno != EEXIST) return false;
+  }
+  return false;
+}
+
+// Holds off SIGINT, SIGTERM and SIGHUP while it lives: they arrive once it ends.
+class SignalsHeld {
+ public:
+  SignalsHeld() {
+    sigset_t set;
+    sigemptyset(&set);
+    for (const int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&set, sig);
+    sigprocmask(SIG_BLOCK, &set, &old_);
+  }
+  ~SignalsHeld() { sigprocmask(SIG_SETMASK, &old_, nullptr); }
+  SignalsHeld(const SignalsHeld&) = delete;
+  SignalsHeld& operator=(const SignalsHeld&) = delete;
+
+ private:
+  sigset_t old_;
+};
+
+// Room for `count` more open files: the soft limit raised towards the hard one where needed.
+void makeRoomForFiles(std::size_t count) {
+  rlimit limit{};
+  if (getrlimit(RLIMIT_NOFILE, &limit) != 0) return;
+  const rlim_t wanted = static_cast<rlim_t>(count) + 64;
+  if (limit.rlim_cur != RLIM_INFINITY && limit.rlim_cur < wanted) {
+    limit.rlim_cur = limit.rlim_max == RLIM_INFINITY ? wanted : std::min(wanted, limit.rlim_max);
+    setrlimit(RLIMIT_NOFILE, &limit);
+  }
+}
+
+}  // namespace
+
+void OutputSet::add(const fs::path& path, std::string bytes) {
+  for (Staged& f : files_)
+    if (f.path == path) {
+      f.bytes = std::move(bytes);
+      return;
+    }
+  files_.push_back({path, std::move(bytes)});
+}
+
+void OutputSet::addPng(const fs::path& path, const Image& image) {
   std::string png;
   const auto append = [](void* context, void* data, int size) {
     static_cast<std::string*>(context)->append(static_cast<const char*>(data),
@@ -94,7 +212,56 @@ void writePng(const fs::path& path, const Image& image) {
   if (!stbi_write_png_to_func(append, &png, image.width, image.height, image.channels, image.pixels.data(),
                               image.width * image.channels))
     throw OutputError("could not encode " + path.string() + " as PNG");
-  writeFile(path, png);
+  add(path, std::move(png));
+}
+
+void OutputSet::commit() {
+  std::vector<Staged> files = std::move(files_);
+  files_.clear();
+  std::vector<fs::path> folders;  // made by this commit, outermost first
+  std::vector<Writing> writing;
+  const auto undo = [&] {
+    for (Writing& w : writing) {
+      if (w.fd >= 0) close(w.fd);
+      if (!w.linked.empty() && !w.renamed) unlink(w.linked.c_str());
+      if (w.renamed) unlink(w.target.c_str());
+    }
+    for (auto it = folders.rbegin(); it != folders.rend(); ++it) rmdir(it->c_str());
+  };
+  try {
+    makeRoomForFiles(files.size());
+    for (const Staged& f : files) {
+      if (f.path.empty()) throw OutputError("could not write a file with an empty name");
+      makeFolders(f.path.parent_path(), f.path, folders);
+      Writing& w = writing.emplace_back();
+      w.target = f.path;
+      w.fd = openUnnamed(f.path.parent_path(), w.linked);
+      if (w.fd < 0 || !writeAll(w.fd, f.bytes)) cannotWrite(f.path, std::strerror(errno));
+    }
+    const SignalsHeld held;
+    for (Writing& w : writing)
+      if (w.linked.empty() && !giveName(w)) cannotWrite(w.target, std::strerror(errno));
+    for (Writing& w : writing) {
+      if (std::rename(w.linked.c_str(), w.target.c_str()) != 0) cannotWrite(w.target, std::strerror(errno));
+      w.renamed = true;
+    }
+    for (Writing& w : writing) close(std::exchange(w.fd, -1));
+  } catch (...) {
+    undo();
+    throw;
+  }
+}
+
+void writeFile(const fs::path& path, std::string_view bytes) {
+  OutputSet set;
+  set.add(path, std::string(bytes));
+  set.commit();
+}
+
+void writePng(const fs::path& path, const Image& image) {
+  OutputSet set;
+  set.addPng(path, image);
+  set.commit();
 }
 
 Image readPng(const fs::path& path, int channels) {
@@ -109,6 +276,7 @@ Image readPng(const fs::path& path, int channels) {
 
 void checkOutputFile(const fs::path& path, const std::string& flag) {
   if (path.empty()) throw OutputError(flag + ": the file name is empty");
+  checkNameLengths(path, flag);
   if (!path.has_filename()) refuse(flag, path, "names a folder; a file name is expected");
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
@@ -120,6 +288,7 @@ void checkOutputFile(const fs::path& path, const std::string& flag) {
 
 void checkOutputFolder(const fs::path& path, const std::string& flag) {
   if (path.empty()) throw OutputError(flag + ": the folder name is empty");
+  checkNameLengths(path, flag);
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
   if (fs::exists(status) && !fs::is_directory(status)) refuse(flag, path, "is not a folder");

@@ -122,6 +122,20 @@ void Frame::count(std::string_view name, std::uint64_t amount) {
   recorder_.count(name, amount);
 }
 
+int OptionsChosen::value(std::string_view name) const {
+  for (const Option& o : options)
+    if (o.name == name) return o.value;
+  throw std::logic_error("no option '" + std::string(name) + "'");
+}
+
+bool OptionsChosen::set(std::string_view name) const {
+  return std::any_of(settings.begin(), settings.end(), [&](const auto& s) { return s.first == name; });
+}
+
+void Frame::progress(std::string_view what, std::size_t done, std::size_t total) const {
+  if (progressSink_) progressSink_(what, done, total);
+}
+
 void Frame::shadowMask(std::string_view name) {
   if (name.empty() || name.find_first_of("/\\") != std::string_view::npos || name.front() == '.')
     throw std::logic_error("shadow mask name '" + std::string(name) + "' is not a plain file name");
@@ -251,7 +265,7 @@ std::filesystem::path rawPathBeside(const std::filesystem::path& picture) {
 }
 
 // --oracle: the stencil's lit receivers against a CPU ray cast of the scene the lesson drew.
-bool checkShadows(const Session& s, const Image& stencil) {
+bool checkShadows(Session& s, const Image& stencil) {
   if (!s.shadowCheck)
     throw UsageError(s.info.id + " makes no shadow claim in variant '" + s.variant +
                      "' to check with --oracle");
@@ -268,10 +282,10 @@ bool checkShadows(const Session& s, const Image& stencil) {
   const OracleReport r = compareWithOracle(oracle, lit, size, &surfaces);
   Image picture(size.x, size.y, 4);
   picture.pixels = oraclePicture(oracle, lit, size, &surfaces);
-  writePng(*s.commandLine.oracle, picture);
+  s.outputs.addPng(*s.commandLine.oracle, picture);
   Image classes(size.x, size.y, 1);  // the oracle's classes as raw bytes (PixelClass), for tools
   for (std::size_t i = 0; i < oracle.size(); ++i) classes.pixels[i] = static_cast<std::uint8_t>(oracle[i]);
-  writePng(rawPathBeside(*s.commandLine.oracle), classes);
+  s.outputs.addPng(rawPathBeside(*s.commandLine.oracle), classes);
   std::cerr << (r.passed() ? "oracle ok: " : "oracle FAILED: ") << r.receiverPixels << " receiver pixels, "
             << r.shadowedPixels << " shadowed; " << r.disagreements << " disagree, " << r.onEdges
             << " of them on edges (picture: " << s.commandLine.oracle->string() << ")\n";
@@ -372,7 +386,10 @@ void checkOutputs(const CommandLine& cl, const LessonInfo& info) {
   if (cl.golden && cl.updateGolden) checkOutputFolder(*cl.golden, "--golden");
   if (cl.golden && !cl.updateGolden) {
     std::error_code ec;
-    if (!std::filesystem::is_directory(*cl.golden, ec))
+    const std::filesystem::file_status status = std::filesystem::status(*cl.golden, ec);
+    if (std::filesystem::exists(status) && !std::filesystem::is_directory(status))
+      throw UsageError("--golden " + cl.golden->string() + ": is a file; --golden takes the goldens' folder");
+    if (!std::filesystem::is_directory(status))
       throw UsageError("--golden " + cl.golden->string() +
                        ": no such folder; --update-golden writes the goldens first");
     if (cl.artifacts)
@@ -398,8 +415,13 @@ int runHeadless(Session& s) {
         .measure = cl.stats, .captureAll = last && cl.passesDir.has_value(), .captureOnly = {}};
     s.saveShadowMasks = last;
     const auto start = std::chrono::steady_clock::now();
-    s.renderFrame(cl.time + i / 60.0, request);
-    glFinish();
+    {
+      const SlowWorkReporter reporter("frame " + std::to_string(i + 1) + " of " + std::to_string(frames) + " at " +
+                                          std::to_string(cl.width) + "x" + std::to_string(cl.height),
+                                      s.progress, cl.quiet);
+      s.renderFrame(cl.time + i / 60.0, request);
+      glFinish();
+    }
     frameMs.push_back(
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     if (frames > 1 && !cl.quiet && (i + 1) % 60 == 0) std::cerr << "frame " << i + 1 << "/" << frames << "\n";
@@ -475,7 +497,7 @@ int runShadowHours(Session& s, Scene& scene, const LessonFactory& make) {
         ++counts[i];
         ++shadowed;
       }
-    if (cl.maskOut) writePng(*cl.maskOut / ("step-" + std::string(clock) + ".png"), mask);
+    if (cl.maskOut) s.outputs.addPng(*cl.maskOut / ("step-" + std::string(clock) + ".png"), mask);
     totalMs += ms;
     if (!cl.quiet) {
       char line[200];
@@ -487,10 +509,11 @@ int runShadowHours(Session& s, Scene& scene, const LessonFactory& make) {
       std::cerr << line;
     }
   }
-  writePng(*cl.shadowHours, shadowHoursPicture(counts, width, height, steps - nightSteps, cl.shadowStep));
+  s.outputs.addPng(*cl.shadowHours, shadowHoursPicture(counts, width, height, steps - nightSteps, cl.shadowStep));
   Image raw(width, height, 1);
   for (std::size_t i = 0; i < counts.size(); ++i) raw.pixels[i] = static_cast<std::uint8_t>(counts[i]);
-  writePng(rawPathBeside(*cl.shadowHours), raw);
+  s.outputs.addPng(rawPathBeside(*cl.shadowHours), raw);
+  s.outputs.commit();
   if (!cl.quiet)
     std::cerr << "shadow-hours: " << steps << (steps == 1 ? " step of " : " steps of ") << cl.shadowStep
               << " min, " << nightSteps << " of them at night (the sun down: no sun shadow, not counted), "
@@ -504,15 +527,15 @@ int runShadowHours(Session& s, Scene& scene, const LessonFactory& make) {
 
 int finishRun(Session& s, const Image& colour, const Image& stencil, const std::vector<double>& frameMs) {
   const CommandLine& cl = s.commandLine;
-  if (cl.out) writePng(*cl.out, colour);
+  if (cl.out) s.outputs.addPng(*cl.out, colour);
   if (cl.stencilOut) {
-    writePng(*cl.stencilOut, stencilPicture(cl, stencil));
-    writePng(rawPathBeside(*cl.stencilOut), stencil);
+    s.outputs.addPng(*cl.stencilOut, stencilPicture(cl, stencil));
+    s.outputs.addPng(rawPathBeside(*cl.stencilOut), stencil);
   }
   if (cl.depthOut) {
     DepthRange range;
-    writePng(*cl.depthOut, depthPicture(s.framebuffer->readDepth(), s.framebuffer->width(),
-                                        s.framebuffer->height(), s.projection, s.reversedDepth, &range));
+    s.outputs.addPng(*cl.depthOut, depthPicture(s.framebuffer->readDepth(), s.framebuffer->width(),
+                                                s.framebuffer->height(), s.projection, s.reversedDepth, &range));
     if (!cl.quiet) std::cerr << depthLegendLine(range) << "\n";
   }
   if (cl.passesDir) {
@@ -520,12 +543,13 @@ int finishRun(Session& s, const Image& colour, const Image& stencil, const std::
     for (const Snapshot& snap : s.recorder->snapshots()) {
       char prefix[16];
       std::snprintf(prefix, sizeof prefix, "%02d-", index++);
-      writePng(*cl.passesDir / (prefix + snap.pass + ".png"), snap.colour);
-      writePng(*cl.passesDir / (prefix + snap.pass + ".stencil.png"), stencilPicture(cl, snap.stencil));
+      s.outputs.addPng(*cl.passesDir / (prefix + snap.pass + ".png"), snap.colour);
+      s.outputs.addPng(*cl.passesDir / (prefix + snap.pass + ".stencil.png"), stencilPicture(cl, snap.stencil));
     }
   }
-  if (cl.stats && !frameMs.empty()) std::cout << statsJson(s, frameMs);
-  if (cl.oracle && !checkShadows(s, stencil)) return 1;
+  // The oracle's pictures belong to the set: a check that throws leaves nothing written.
+  const bool shadowsRight = !cl.oracle || checkShadows(s, stencil);
+  bool goldenCompared = false;
   if (cl.golden) {
     const std::string& renderer = s.context->features().renderer;
     if (!isGoldenRenderer(renderer)) {
@@ -533,22 +557,34 @@ int finishRun(Session& s, const Image& colour, const Image& stencil, const std::
           "the goldens are Mesa llvmpipe's pictures and this context is " + renderer +
           " (LIBGL_ALWAYS_SOFTWARE=1 picks llvmpipe; ctest -L oracle checks this renderer)";
       if (cl.updateGolden) throw UsageError("--update-golden: " + why);
+      s.outputs.commit();
       std::cerr << "golden skipped: " << why << "\n";
       return 77;  // ctest's SKIP_RETURN_CODE for the golden tests
     }
-    if (cl.updateGolden) {
-      writeGolden(colour, stencil, *cl.golden, s.variant);
-      std::cerr << "wrote " << goldenColourPath(*cl.golden, s.variant).string() << " and "
-                << goldenStencilPath(*cl.golden, s.variant).string() << "\n";
-      return 0;
-    }
-    const auto artifacts = cl.artifacts.value_or(defaultArtifactsRoot(s.info) /
-                                                 (s.variant + "-" + backendName(s.context->backend())));
-    const GoldenResult result = checkGolden(colour, stencil, *cl.golden, s.variant, artifacts);
-    std::cerr << (result.passed ? "golden ok: " : "golden FAILED: ") << result.message << "\n";
-    return result.passed ? 0 : 1;
+    if (cl.updateGolden) writeGolden(colour, stencil, *cl.golden, s.variant, s.outputs);
+    goldenCompared = !cl.updateGolden;
   }
-  return 0;
+  s.outputs.commit();
+  if (cl.stats && !frameMs.empty()) std::cout << statsJson(s, frameMs);
+  if (cl.golden && cl.updateGolden)
+    std::cerr << "wrote " << goldenColourPath(*cl.golden, s.variant).string() << " and "
+              << goldenStencilPath(*cl.golden, s.variant).string() << "\n";
+  if (!shadowsRight) return 1;
+  if (!goldenCompared) return 0;
+  // A failed comparison's artifacts are a set of their own: the test has failed (exit 1) whether
+  // or not they can be written, and the line says which.
+  const auto artifacts = cl.artifacts.value_or(defaultArtifactsRoot(s.info) /
+                                               (s.variant + "-" + backendName(s.context->backend())));
+  OutputSet artifactFiles;
+  const GoldenResult result = checkGolden(colour, stencil, *cl.golden, s.variant, artifacts, artifactFiles);
+  std::string unwritten;
+  try {
+    artifactFiles.commit();
+  } catch (const OutputError& e) {
+    unwritten = std::string(" (its images were not written: ") + e.what() + ")";
+  }
+  std::cerr << (result.passed ? "golden ok: " : "golden FAILED: ") << result.message << unwritten << "\n";
+  return result.passed ? 0 : 1;
 }
 
 namespace {
@@ -583,11 +619,15 @@ Scene readScene(const CommandLine& cl, LessonInfo& info) {
                        (scene.lights.size() == 1 ? " light)" : " lights)"));
     }
   }
-  if (!cl.quiet)
-    for (const SceneObject& o : scene.objects)
-      for (const std::string& m : o.caster.report.messages)
-        std::cerr << cl.scene->string() << ": object '" << o.name << "': " << m << "\n";
   return scene;
+}
+
+// What preparing the scene's casters did and found (welded seams, dropped triangles), a line each.
+void sayWhatTheCastersNeeded(const CommandLine& cl, const Scene& scene) {
+  if (cl.quiet) return;
+  for (const SceneObject& o : scene.objects)
+    for (const std::string& m : o.caster.report.messages)
+      std::cerr << cl.scene->string() << ": object '" << o.name << "': " << m << "\n";
 }
 
 int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, bool readsScenes, int argc,
@@ -623,6 +663,12 @@ int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, 
                                        [](const SceneLight& l) { return l.sun.has_value(); }))
       throw UsageError("--shadow-hours: " + cl.scene->string() +
                        " has no sun light (light sun LAT LON DATE TIME ZONE)");
+    if (info.refuseOptions) {
+      const std::vector<Option> options = optionsFor(info, cl.variant, cl.settings);
+      const std::string why = info.refuseOptions({options, cl.settings, scene ? &*scene : nullptr});
+      if (!why.empty()) throw UsageError(why);
+    }
+    if (scene) sayWhatTheCastersNeeded(cl, *scene);
     const LessonFactory make = [&] { return factory(scene ? &*scene : nullptr); };
     setShaderDirFlag(cl.shaderDir);
     BackendChoice choice = chooseBackend(cl.backend, cl.headless || cl.shadowHours.has_value());

@@ -33,6 +33,17 @@ struct Option {
   int min = 0;
 };
 
+// The options a run starts with, as LessonInfo::refuseOptions sees them before a context is made:
+// the lesson's options with the variant's settings and --set applied, the --set settings as given
+// (NAME, VALUE, in order), and --scene's scene (nullptr without one).
+struct OptionsChosen {
+  const std::vector<Option>& options;
+  const std::vector<std::pair<std::string, int>>& settings;
+  const Scene* scene;
+  int value(std::string_view name) const;  // throws std::logic_error for a name the lesson lacks
+  bool set(std::string_view name) const;   // given with --set
+};
+
 enum class Feature { DepthBoundsTest, PipelineStatistics, ClipControl, DepthClamp, KhrDebug };
 const char* featureName(Feature);
 bool hasFeature(const GlFeatures&, Feature);
@@ -109,6 +120,9 @@ struct LessonInfo {
   // reversedDepth on Frame::projection). Without clip control the run says so once and falls back
   // to the 24-bit fixed-point buffer with GL's default mapping. Off: a 24-bit buffer, as always.
   bool reversedDepth = false;
+  // Refuses options that contradict each other or the scene file (exit 2, before anything is
+  // drawn): returns why in one line, or an empty string. Unset: every combination draws.
+  std::function<std::string(const OptionsChosen&)> refuseOptions;
 };
 
 class PassRecorder;
@@ -163,6 +177,13 @@ class Frame {
   using ShadowMaskWriter = std::function<void(std::string_view name)>;
   void setShadowMaskWriter(ShadowMaskWriter writer) { shadowMaskWriter_ = std::move(writer); }
 
+  // Long CPU work inside a frame (lesson 10's converged ray cast) says how far it has come: DONE
+  // of TOTAL units of WHAT. A headless frame that runs past a few seconds prints it on its "still
+  // rendering" line (WorkProgress in session.h). May be called from several threads at once.
+  void progress(std::string_view what, std::size_t done, std::size_t total) const;
+  using ProgressSink = std::function<void(std::string_view what, std::size_t done, std::size_t total)>;
+  void setProgressSink(ProgressSink sink) { progressSink_ = std::move(sink); }
+
   // In the window, while the right mouse button is held over the picture: the framebuffer pixel
   // under the pointer (x right, y up from the bottom left corner, in pixels). Empty otherwise, and
   // always in headless runs. Lessons that paint (lesson 12's brush) read it; others ignore it.
@@ -173,6 +194,7 @@ class Frame {
   PassRecorder& recorder_;
   unsigned framebuffer_;
   ShadowMaskWriter shadowMaskWriter_;
+  ProgressSink progressSink_;
 };
 
 // The GL state every frame starts from, so that any frame can be reproduced alone; the framework

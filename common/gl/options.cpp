@@ -71,8 +71,13 @@ std::vector<Option> optionsFor(const LessonInfo& info, const std::string& varian
 CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
   CommandLine cl;
   bool spanGiven = false, stepGiven = false;
+  std::vector<std::string> given;  // every flag but --set may be given once: a second would silently win
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
+    const std::string longFlag = flag == "-h" ? "--help" : flag == "-q" ? "--quiet" : flag;
+    if (longFlag != "--set" && std::find(given.begin(), given.end(), longFlag) != given.end())
+      throw UsageError(longFlag + " given twice; --help shows the flags");
+    if (longFlag.starts_with("-")) given.push_back(longFlag);
     auto value = [&]() -> std::string {
       if (i + 1 >= argc) throw UsageError(flag + " needs a value; --help shows the flags");
       return argv[++i];

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <iostream>
 #include <regex>
 #include <stdexcept>
@@ -83,14 +84,61 @@ void Session::renderFrame(double time, FrameRequest request) {
       const Image stencil = framebuffer->readStencil();
       Image mask(stencil.width, stencil.height, 1);
       for (std::size_t i = 0; i < mask.pixels.size(); ++i) mask.pixels[i] = stencil.pixels[i] == 0 ? 255 : 0;
-      writePng(*commandLine.maskOut / (std::string(name) + ".png"), mask);
+      outputs.addPng(*commandLine.maskOut / (std::string(name) + ".png"), mask);
     });
+  progress.clear();
+  frame.setProgressSink(
+      [this](std::string_view what, std::size_t done, std::size_t total) { progress.set(what, done, total); });
   frame.pointer = pointer;
   lesson->render(frame);
   recorder->endFrame();
   viewProjection = frame.projection * frame.view;
   projection = frame.projection;
   if (commandLine.oracle) shadowCheck = lesson->shadowCheck(frame);
+}
+
+void WorkProgress::set(std::string_view what, std::size_t done, std::size_t total) {
+  const std::lock_guard lock(mutex_);
+  what_ = what;
+  done_ = done;
+  total_ = total;
+}
+
+std::string WorkProgress::line() const {
+  const std::lock_guard lock(mutex_);
+  if (what_.empty() || total_ == 0) return {};
+  return "; " + what_ + " " + std::to_string(done_ * 100 / total_) + "% of " + std::to_string(total_);
+}
+
+void WorkProgress::clear() {
+  const std::lock_guard lock(mutex_);
+  what_.clear();
+  done_ = total_ = 0;
+}
+
+SlowWorkReporter::SlowWorkReporter(std::string what, const WorkProgress& progress, bool quiet) {
+  if (quiet) return;
+  thread_ = std::thread([this, what = std::move(what), &progress] {
+    const auto start = std::chrono::steady_clock::now();
+    auto next = start + std::chrono::seconds(5);
+    std::unique_lock lock(mutex_);
+    while (!stop_.wait_until(lock, next, [this] { return stopping_; })) {
+      const auto seconds =
+          std::chrono::duration_cast<std::chrono::seconds>(std::chrono::steady_clock::now() - start).count();
+      std::cerr << what << ": still rendering, " << seconds << " s" << progress.line() << "\n";
+      next += std::chrono::seconds(10);
+    }
+  });
+}
+
+SlowWorkReporter::~SlowWorkReporter() {
+  if (!thread_.joinable()) return;
+  {
+    const std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  stop_.notify_one();
+  thread_.join();
 }
 
 std::vector<std::filesystem::path> courseLessons() {

@@ -1,9 +1,13 @@
 // Everything one run of a lesson holds, shared by the headless and the window paths.
 #pragma once
 #include <filesystem>
+#include <condition_variable>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <thread>
 #include <vector>
 
 #include "gl/context.h"
@@ -14,6 +18,37 @@
 #include "gl/recorder.h"
 
 namespace stencil {
+
+// How far long work in the current frame has come (Frame::progress), and the "still rendering"
+// lines a headless run prints while a frame takes long: the first after 5 s, then every 10 s, so
+// that no long run is silent ("frame 1 of 1 at 8192x8192: still rendering, 15 s; converged ray cast
+// 40% of 307200 pixels"). Thread-safe.
+class WorkProgress {
+ public:
+  void set(std::string_view what, std::size_t done, std::size_t total);
+  std::string line() const;  // "; WHAT P% of TOTAL" or empty
+  void clear();
+
+ private:
+  mutable std::mutex mutex_;
+  std::string what_;
+  std::size_t done_ = 0, total_ = 0;
+};
+
+// While it lives, a thread prints WHAT's "still rendering" lines on stderr (unless quiet).
+class SlowWorkReporter {
+ public:
+  SlowWorkReporter(std::string what, const WorkProgress&, bool quiet);
+  ~SlowWorkReporter();
+  SlowWorkReporter(const SlowWorkReporter&) = delete;
+  SlowWorkReporter& operator=(const SlowWorkReporter&) = delete;
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable stop_;
+  bool stopping_ = false;
+  std::thread thread_;
+};
 
 class Session {
  public:
@@ -39,7 +74,9 @@ class Session {
   std::optional<ShadowCheck> shadowCheck;  // the last frame's, when --oracle asks for it
   glm::mat4 viewProjection{1.0f};          // the last frame's
   glm::mat4 projection{1.0f};              // the last frame's Frame::projection (the depth view)
-  bool saveShadowMasks = false;            // Frame::shadowMask writes under --mask-out (the last frame)
+  bool saveShadowMasks = false;            // Frame::shadowMask stages under --mask-out (the last frame)
+  OutputSet outputs;                       // the run's files, written as one when it ends (finishRun)
+  WorkProgress progress;                   // Frame::progress of the frame being rendered
   Frame::ShadowMaskWriter shadowMaskHook;  // when set, Frame::shadowMask calls it instead (--shadow-hours)
   bool reversedDepth = false;              // the variant's reversed float depth, where the driver allows it
   std::optional<glm::vec2> pointer;        // Frame::pointer for the next frame (the window sets it)
@@ -67,7 +104,9 @@ std::vector<std::filesystem::path> courseLessons();
 int runWindow(Session&);
 
 // Writes what the command line asked for from the last frame (--out, --stencil-out,
-// --passes, --stats, --golden). Returns the exit code.
+// --passes, --stats, --oracle, --golden), with the shadow masks staged while rendering, as one
+// OutputSet: all of them or none. A failed golden's artifacts follow as a set of their own.
+// Returns the exit code.
 int finishRun(Session&, const Image& colour, const Image& stencil, const std::vector<double>& frameMs);
 
 }  // namespace stencil

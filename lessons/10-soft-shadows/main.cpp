@@ -645,7 +645,8 @@ class SoftShadows final : public Lesson {
     f.count("reference_rays_per_pixel", static_cast<std::uint64_t>(k));
     const std::vector<float> fraction = convergedVisibility(
         rays, [&](int object) { return receives[static_cast<std::size_t>(object)]; }, area,
-        glm::inverse(viewProjection), f.size, k);
+        glm::inverse(viewProjection), f.size, k, 0,
+        [&](std::size_t done, std::size_t total) { f.progress("converged ray cast, pixels", done, total); });
     const float n = static_cast<float>(f.option("lights"));
     std::vector<float> pixels(static_cast<std::size_t>(4 * f.size.x * f.size.y), 0.0f);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, target_->fbo());
@@ -1051,6 +1052,12 @@ LessonInfo lessonInfo() {
   info.camera.azimuthDeg = 20.0f;
   info.camera.elevationDeg = 52.0f;
   info.camera.farPlane = kInfinity;  // z-fail's dark caps at infinity stay in the frustum
+  info.refuseOptions = [](const OptionsChosen& o) -> std::string {
+    if (o.set("light") && o.value("light") >= o.value("lights"))
+      return "--set light=" + std::to_string(o.value("light")) + ": there are " +
+             std::to_string(o.value("lights")) + " lights (0 to " + std::to_string(o.value("lights") - 1) + ")";
+    return {};
+  };
   return info;
 }
 

@@ -942,6 +942,19 @@ LessonInfo lessonInfo() {
   info.camera.azimuthDeg = 30.0f;
   info.camera.elevationDeg = 25.0f;
   info.camera.farPlane = 30.0f;
+  // A scene file is the scene: the options that pick the lesson's own scenes, and the demo's two
+  // solids, have nothing to draw it with.
+  info.refuseOptions = [](const OptionsChosen& o) -> std::string {
+    if (!o.scene) return {};
+    for (const char* own : {"scene", "op", "grid"})
+      if (o.set(own))
+        return std::string("--set ") + own + ": it picks among the lesson's own scenes; --scene " +
+               o.scene->file.string() + " is the scene";
+    if (o.value("method") == kTwoSolids)
+      return "--scene: method 0 draws the demo's two solids; the scene's csg expression needs "
+             "--set method=1, 2 or 3";
+    return {};
+  };
   return info;
 }
 

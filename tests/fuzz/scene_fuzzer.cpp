@@ -1,7 +1,9 @@
 // libFuzzer target: a scene file's text through parseScene. After a line "%%obj" the rest of the
 // input is the text of every OBJ file the scene names (without one, a closed tetrahedron); OBJ
 // files are served from memory, so nothing outside the input is read. A SceneError is the
-// expected answer to bad input; any other exception, crash or sanitizer report is a bug.
+// expected answer to bad input; any other exception, crash or sanitizer report is a bug, and so is a
+// scene read without error whose model matrices (at any time) or lights the lessons cannot use.
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -33,6 +35,25 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       stencil::validateMesh(o.mesh);
       if (!stencil::allFinite(o.mesh)) __builtin_trap();
       triangles += o.mesh.triangleCount();
+      // What the scene becomes at any time a lesson may render it: every model matrix is one the
+      // lessons and the ray casts can use (affine, invertible, its world points finite and within
+      // the scene's bounds). transformed() throws where it is not.
+      for (const double t : {0.0, 1.0, -3.7, 1234.5, stencil::kMaxSceneTime, -stencil::kMaxSceneTime}) {
+        const stencil::Mesh world = stencil::transformed(o.mesh, o.modelAt(t));
+        if (!stencil::allFinite(world)) __builtin_trap();
+        for (const glm::vec3& p : world.positions)
+          if (glm::any(glm::greaterThan(glm::abs(p), glm::vec3(1.001f * stencil::kMaxSceneCoordinate))))
+            __builtin_trap();
+      }
+    }
+    // Every light a position or a unit direction.
+    for (const stencil::SceneLight& l : s.lights) {
+      for (int i = 0; i < 4; ++i)
+        if (!std::isfinite(l.position[i])) __builtin_trap();
+      if (l.position.w == 0.0f && std::abs(glm::length(glm::vec3(l.position)) - 1.0f) > 1e-5f) __builtin_trap();
+      if (l.position.w != 0.0f &&
+          glm::any(glm::greaterThan(glm::abs(glm::vec3(l.position)), glm::vec3(stencil::kMaxSceneCoordinate))))
+        __builtin_trap();
     }
     if (s.lights.size() > stencil::kMaxSceneLights || s.objects.size() > stencil::kMaxSceneObjects ||
         triangles > stencil::kMaxSceneTriangles)

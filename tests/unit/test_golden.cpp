@@ -22,6 +22,21 @@ std::filesystem::path freshDir(const std::string& name) {
   return dir;
 }
 
+// The golden functions stage their files; these write them at once, as a lesson's run does.
+void writeGoldenNow(const Image& colour, const Image& stencil, const std::filesystem::path& dir,
+                    const std::string& name) {
+  OutputSet out;
+  writeGolden(colour, stencil, dir, name, out);
+  out.commit();
+}
+GoldenResult checkGoldenNow(const Image& colour, const Image& stencil, const std::filesystem::path& dir,
+                            const std::string& name, const std::filesystem::path& artifacts) {
+  OutputSet out;
+  const GoldenResult r = checkGolden(colour, stencil, dir, name, artifacts, out);
+  out.commit();
+  return r;
+}
+
 }  // namespace
 
 TEST(GoldenDiff, ColourWithinChannelToleranceDoesNotCount) {
@@ -57,24 +72,24 @@ TEST(GoldenCheck, ColourFractionLimitIsInclusive) {
   // 1000 pixels and a 0.1% allowance: one differing pixel passes, two fail.
   const auto dir = freshDir("fraction");
   const Image colour = solid(100, 10, 4, 50), stencil = solid(100, 10, 1, 0);
-  writeGolden(colour, stencil, dir, "v");
+  writeGoldenNow(colour, stencil, dir, "v");
   Image one = colour;
   one.at(0, 0)[0] = 200;
-  EXPECT_TRUE(checkGolden(one, stencil, dir, "v", dir / "artifacts-one").passed);
+  EXPECT_TRUE(checkGoldenNow(one, stencil, dir, "v", dir / "artifacts-one").passed);
   Image two = one;
   two.at(1, 0)[0] = 200;
-  EXPECT_FALSE(checkGolden(two, stencil, dir, "v", dir / "artifacts-two").passed);
+  EXPECT_FALSE(checkGoldenNow(two, stencil, dir, "v", dir / "artifacts-two").passed);
 }
 
 TEST(GoldenCheck, OneStencilValueFailsAndLeavesArtifacts) {
   const auto dir = freshDir("artifacts");
   const Image colour = solid(16, 16, 4, 80), stencil = solid(16, 16, 1, 1);
-  writeGolden(colour, stencil, dir, "v");
-  ASSERT_TRUE(checkGolden(colour, stencil, dir, "v", dir / "a").passed);
+  writeGoldenNow(colour, stencil, dir, "v");
+  ASSERT_TRUE(checkGoldenNow(colour, stencil, dir, "v", dir / "a").passed);
 
   Image changed = stencil;
   *changed.at(2, 2) = 2;
-  const GoldenResult r = checkGolden(colour, changed, dir, "v", dir / "a");
+  const GoldenResult r = checkGoldenNow(colour, changed, dir, "v", dir / "a");
   EXPECT_FALSE(r.passed);
   EXPECT_NE(r.message.find("stencil: 1 of 256"), std::string::npos) << r.message;
   for (const char* f : {"colour-actual.png", "colour-expected.png", "colour-diff.png", "stencil-actual.png",
@@ -90,7 +105,7 @@ TEST(GoldenCheck, OneStencilValueFailsAndLeavesArtifacts) {
 
 TEST(GoldenCheck, MissingGoldenFailsWithItsPath) {
   const auto dir = freshDir("missing");
-  const GoldenResult r = checkGolden(solid(4, 4, 4, 0), solid(4, 4, 1, 0), dir, "nope", dir / "a");
+  const GoldenResult r = checkGoldenNow(solid(4, 4, 4, 0), solid(4, 4, 1, 0), dir, "nope", dir / "a");
   EXPECT_FALSE(r.passed);
   EXPECT_NE(r.message.find("nope.png"), std::string::npos) << r.message;
 }
