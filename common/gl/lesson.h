@@ -178,7 +178,7 @@ class Frame {
   void setShadowMaskWriter(ShadowMaskWriter writer) { shadowMaskWriter_ = std::move(writer); }
 
   // Long CPU work inside a frame (lesson 10's converged ray cast) says how far it has come: DONE
-  // of TOTAL units of WHAT. A headless frame that runs past a few seconds prints it on its "still
+  // of TOTAL WHAT ("pixels ray cast"). A headless frame that runs past a few seconds prints it on its "still
   // rendering" line (WorkProgress in session.h). May be called from several threads at once.
   void progress(std::string_view what, std::size_t done, std::size_t total) const;
   using ProgressSink = std::function<void(std::string_view what, std::size_t done, std::size_t total)>;

@@ -71,13 +71,19 @@ std::vector<Option> optionsFor(const LessonInfo& info, const std::string& varian
 CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
   CommandLine cl;
   bool spanGiven = false, stepGiven = false;
-  std::vector<std::string> given;  // every flag but --set may be given once: a second would silently win
+  // A flag that names a file or a folder may be given once: with two, one file would silently not
+  // be written (or read). Other flags may be given again, the last one counting (--size, --time).
+  static const std::vector<std::string> paths = {"--out",    "--stencil-out", "--depth-out",    "--passes",
+                                                 "--golden", "--artifacts",   "--shader-dir",   "--oracle",
+                                                 "--scene",  "--mask-out",    "--shadow-hours"};
+  std::vector<std::string> given;
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
-    const std::string longFlag = flag == "-h" ? "--help" : flag == "-q" ? "--quiet" : flag;
-    if (longFlag != "--set" && std::find(given.begin(), given.end(), longFlag) != given.end())
-      throw UsageError(longFlag + " given twice; --help shows the flags");
-    if (longFlag.starts_with("-")) given.push_back(longFlag);
+    if (std::find(paths.begin(), paths.end(), flag) != paths.end()) {
+      if (std::find(given.begin(), given.end(), flag) != given.end())
+        throw UsageError(flag + " given twice; each file or folder flag names one");
+      given.push_back(flag);
+    }
     auto value = [&]() -> std::string {
       if (i + 1 >= argc) throw UsageError(flag + " needs a value; --help shows the flags");
       return argv[++i];

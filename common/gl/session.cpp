@@ -107,7 +107,8 @@ void WorkProgress::set(std::string_view what, std::size_t done, std::size_t tota
 std::string WorkProgress::line() const {
   const std::lock_guard lock(mutex_);
   if (what_.empty() || total_ == 0) return {};
-  return "; " + what_ + " " + std::to_string(done_ * 100 / total_) + "% of " + std::to_string(total_);
+  return "; " + std::to_string(done_) + " of " + std::to_string(total_) + " " + what_ + " (" +
+         std::to_string(done_ * 100 / total_) + "%)";
 }
 
 void WorkProgress::clear() {

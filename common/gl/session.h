@@ -21,12 +21,12 @@ namespace stencil {
 
 // How far long work in the current frame has come (Frame::progress), and the "still rendering"
 // lines a headless run prints while a frame takes long: the first after 5 s, then every 10 s, so
-// that no long run is silent ("frame 1 of 1 at 8192x8192: still rendering, 15 s; converged ray cast
-// 40% of 307200 pixels"). Thread-safe.
+// that no long run is silent ("frame 1 of 1 at 640x480: still rendering, 15 s; 122880 of 307200
+// pixels ray cast (40%)"). Thread-safe.
 class WorkProgress {
  public:
   void set(std::string_view what, std::size_t done, std::size_t total);
-  std::string line() const;  // "; WHAT P% of TOTAL" or empty
+  std::string line() const;  // "; DONE of TOTAL WHAT (P%)" or empty
   void clear();
 
  private:

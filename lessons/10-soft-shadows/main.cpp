@@ -646,7 +646,7 @@ class SoftShadows final : public Lesson {
     const std::vector<float> fraction = convergedVisibility(
         rays, [&](int object) { return receives[static_cast<std::size_t>(object)]; }, area,
         glm::inverse(viewProjection), f.size, k, 0,
-        [&](std::size_t done, std::size_t total) { f.progress("converged ray cast, pixels", done, total); });
+        [&](std::size_t done, std::size_t total) { f.progress("pixels ray cast", done, total); });
     const float n = static_cast<float>(f.option("lights"));
     std::vector<float> pixels(static_cast<std::size_t>(4 * f.size.x * f.size.y), 0.0f);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, target_->fbo());

@@ -76,13 +76,15 @@ case $case_name in
       fail "a 250-byte name failed: $(cat stderr.log)"
     [ "$(find . -mindepth 1 -not -name '*.log' | wc -l)" = 3 ] && [ -f "$name" ] || fail "expected 3 files: $(ls -A)"
     ;;
-  planted-link)  # links at the old guessable temporary name and at the output itself
+  planted-link)  # a link and a folder at the old guessable temporary names, a link at an output
     echo "victim" >victim.txt
-    bash -c 'ln -s victim.txt a.png.tmp-$$ && ln -s victim.txt b.png &&
+    bash -c 'ln -s victim.txt a.png.tmp-$$ && mkdir b.png.tmp-$$ && ln -s victim.txt b.png &&
              exec "$0" --headless --quiet --size 64x48 --out a.png --stencil-out b.png' "$lessons/13-depth-complexity" 2>stderr.log ||
       fail "the run failed: $(cat stderr.log)"
     [ "$(cat victim.txt)" = victim ] || fail "a planted link was followed: victim.txt changed"
-    [ -f a.png ] && [ ! -L a.png ] && [ -f b.png ] && [ ! -L b.png ] || fail "expected a.png and b.png as files"
+    [ -f a.png ] && [ ! -L a.png ] && [ -f b.png ] && [ ! -L b.png ] && [ -f b.raw.png ] ||
+      fail "expected a.png, b.png and b.raw.png as files: $(ls -lA)"
+    [ "$(find . -mindepth 1 -name '*.tmp-*' | wc -l)" = 2 ] || fail "the planted names were touched: $(ls -lA)"
     ;;
   killed)  # SIGKILL and SIGTERM at moments through a large write leave the whole file or nothing
     for signal in KILL TERM; do

@@ -358,6 +358,8 @@ TEST(SceneFile, WhatTheTransformsMakeIsCheckedAtTheLineThatMakesIt) {
       {h + "  scale 1000\n  scale 1000\n  scale 1000\n",
        "test.scene:6: the transforms up to this line scale the object by 1e+09; a scene's scales lie within "
        "1e-06 to 1e+06"},
+      {h + "  scale 1e20\n", "test.scene:4: the transforms up to this line scale the object by 1e+20; a "
+                             "scene's scales lie within 1e-06 to 1e+06"},
       {h + "  scale 1e-20\n", "test.scene:4: the transforms up to this line scale the object by 1e-20; a "
                               "scene's scales lie within 1e-06 to 1e+06"},
       {h + "  scale 1 1 1e-7\n", "test.scene:4: the transforms up to this line scale the object by 1e-07 to 1; a "
