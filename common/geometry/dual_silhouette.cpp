@@ -250,7 +250,8 @@ void DualEdgeBvh::prefetch(const Node* node) {
 }
 
 void DualEdgeBvh::prefetchPlanes(const std::pair<std::uint32_t, std::uint32_t>& leaf) const {
-  prefetchBytes(leafPlanes_.data() + 2 * static_cast<std::size_t>(leaf.first), 2 * sizeof(glm::vec4) * leaf.second);
+  const std::size_t first = leaf.first / 4, last = (leaf.first + leaf.second - 1) / 4;
+  prefetchBytes(leafPlanes_.data() + first, (last + 1 - first) * sizeof(PlaneGroup));
 }
 
 DualEdgeBvh::DualEdgeBvh(const SilhouetteCaster& caster, std::size_t maxLeaf)
@@ -274,11 +275,14 @@ DualEdgeBvh::DualEdgeBvh(const SilhouetteCaster& caster, std::size_t maxLeaf)
   nodes_.push_back({});
   if (!items.empty()) build(0, items.data(), items.data() + items.size());
   // The leaves' planes, in leaf order: the only face data a descent reads.
-  leafPlanes_.reserve(2 * leafEdges_.size());
-  for (std::uint32_t e : leafEdges_) {
-    const SilhouetteCaster::EdgeFaces& ef = caster.edgeFaces[e];
-    leafPlanes_.push_back(planes[ef.face0]);
-    leafPlanes_.push_back(planes[ef.face1]);
+  leafPlanes_.assign((leafEdges_.size() + 3) / 4, PlaneGroup{});
+  for (std::size_t k = 0; k < leafEdges_.size(); ++k) {
+    const SilhouetteCaster::EdgeFaces& ef = caster.edgeFaces[leafEdges_[k]];
+    PlaneGroup& group = leafPlanes_[k / 4];
+    for (int c = 0; c < 4; ++c) {
+      group.planes[c][k % 4] = planes[ef.face0][c];
+      group.planes[4 + c][k % 4] = planes[ef.face1][c];
+    }
   }
 }
 
@@ -352,26 +356,17 @@ void DualEdgeBvh::descend(const glm::vec4& light, std::vector<SilhouetteEdge>& o
   const float margin = pruningMargin(light, cornerScale_);
   // face0 and face1 of an edge: decided by the unit plane when P.L is beyond the margin, else by
   // the brute force's test. An edge goes in when they disagree, with face0's flag for its direction.
+  // (The caster's edge record is read only for such a face: most edges come here decided.)
   const auto decide = [&](std::uint32_t e, float d0, float d1) {
-    const SilhouetteCaster::EdgeFaces& ef = caster_.edgeFaces[e];
-    bool lit0, lit1;
-    if (d0 > margin)
-      lit0 = true;
-    else if (d0 < -margin)
-      lit0 = false;
-    else {
+    const auto side = [&](float d, bool second) {
+      if (d > margin) return true;
+      if (d < -margin) return false;
       ++stats_.exactTests;
-      lit0 = facesLight(caster_, ef.face0, light);
-    }
-    if (d1 > margin)
-      lit1 = true;
-    else if (d1 < -margin)
-      lit1 = false;
-    else {
-      ++stats_.exactTests;
-      lit1 = facesLight(caster_, ef.face1, light);
-    }
-    if (lit0 != lit1) found_.push_back(e << 1 | (lit0 ? 1u : 0u));
+      const SilhouetteCaster::EdgeFaces& ef = caster_.edgeFaces[e];
+      return facesLight(caster_, second ? ef.face1 : ef.face0, light);
+    };
+    const bool lit0 = side(d0, false);
+    if (lit0 != side(d1, true)) found_.push_back(e << 1 | (lit0 ? 1u : 0u));
   };
   for (std::uint32_t e : always_) {
     ++stats_.edgesTested;
@@ -436,22 +431,45 @@ void DualEdgeBvh::descend(const glm::vec4& light, std::vector<SilhouetteEdge>& o
     if (i + ahead < leaves_.size()) prefetchPlanes(leaves_[i + ahead]);
     const auto [first, count] = leaves_[i];
     stats_.edgesTested += count;
-    const glm::vec4* p = leafPlanes_.data() + 2 * static_cast<std::size_t>(first);
-    // Both faces beyond the margin on one side: not on the silhouette (most edges of a leaf). The
-    // others' bits are gathered without a branch and only those edges are looked at.
-    float d0[255], d1[255];
-    std::uint64_t open[4] = {0, 0, 0, 0};
-    for (std::uint32_t k = 0; k < count; ++k) {
-      d0[k] = glm::dot(p[2 * k], light);
-      d1[k] = glm::dot(p[2 * k + 1], light);
-      const bool settled = ((d0[k] > margin) & (d1[k] > margin)) | ((d0[k] < -margin) & (d1[k] < -margin));
-      open[k >> 6] |= static_cast<std::uint64_t>(!settled) << (k & 63);
-    }
-    for (std::uint32_t word = 0; word < 4; ++word)
-      for (std::uint64_t bits = open[word]; bits != 0; bits &= bits - 1) {
-        const std::uint32_t k = 64 * word + static_cast<std::uint32_t>(std::countr_zero(bits));
-        decide(leafEdges_[first + k], d0[k], d1[k]);
+    // Four edges at a time, the groups that hold the leaf's: both faces beyond the margin on one
+    // side, not on the silhouette (most edges of a leaf). The others (lanes of this leaf only) are
+    // looked at one by one.
+    for (std::uint32_t g = first / 4; g <= (first + count - 1) / 4; ++g) {
+      const PlaneGroup& group = leafPlanes_[g];
+      const std::uint32_t from = std::max(first, 4 * g) - 4 * g, to = std::min(first + count, 4 * g + 4) - 4 * g;
+      const std::uint32_t lanes = ((1u << to) - 1u) & ~((1u << from) - 1u);
+      alignas(16) float d0[4], d1[4];
+#ifdef __SSE2__
+      const auto dot = [&](int c) {  // ((x + y) + z) + w, four lanes
+        const __m128 xy = _mm_add_ps(_mm_mul_ps(_mm_load_ps(group.planes[c]), L[0]),
+                                     _mm_mul_ps(_mm_load_ps(group.planes[c + 1]), L[1]));
+        return _mm_add_ps(_mm_add_ps(xy, _mm_mul_ps(_mm_load_ps(group.planes[c + 2]), L[2])),
+                          _mm_mul_ps(_mm_load_ps(group.planes[c + 3]), L[3]));
+      };
+      const __m128 a = dot(0), b = dot(4);
+      _mm_store_ps(d0, a);
+      _mm_store_ps(d1, b);
+      const __m128 settled = _mm_or_ps(_mm_and_ps(_mm_cmpgt_ps(a, above), _mm_cmpgt_ps(b, above)),
+                                       _mm_and_ps(_mm_cmplt_ps(a, below), _mm_cmplt_ps(b, below)));
+      const auto open = lanes & ~static_cast<std::uint32_t>(_mm_movemask_ps(settled));
+#else
+      std::uint32_t open = 0;
+      for (int lane = 0; lane < 4; ++lane) {
+        d0[lane] = ((group.planes[0][lane] * light.x + group.planes[1][lane] * light.y) +
+                    group.planes[2][lane] * light.z) + group.planes[3][lane] * light.w;
+        d1[lane] = ((group.planes[4][lane] * light.x + group.planes[5][lane] * light.y) +
+                    group.planes[6][lane] * light.z) + group.planes[7][lane] * light.w;
+        const bool settled =
+            (d0[lane] > margin && d1[lane] > margin) || (d0[lane] < -margin && d1[lane] < -margin);
+        if (!settled) open |= 1u << lane;
       }
+      open &= lanes;
+#endif
+      for (std::uint32_t bits = open; bits != 0; bits &= bits - 1) {
+        const auto lane = static_cast<std::uint32_t>(std::countr_zero(bits));
+        decide(leafEdges_[4 * g + lane], d0[lane], d1[lane]);
+      }
+    }
   }
   sortEdges(found_, sortSpare_);
   for (std::uint32_t f : found_) {

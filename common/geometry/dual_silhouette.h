@@ -107,7 +107,8 @@ class DualSilhouettes {
 //
 // Layout for a descent: four children per node, their boxes stored axis by axis and tested
 // together (SSE); nodes in depth-first order; a leaf's edges consecutive, each with its two
-// faces' unit planes (32 bytes an edge), so that a leaf is one run of memory and the caster's
+// faces' unit planes (32 bytes an edge, four edges' planes tested at once), so that a leaf is one
+// run of memory and the caster's
 // arrays are read only for a face too close to edge-on for the planes to decide (then by the brute
 // force's own test, as DualSilhouettes does). Exact on the same terms as DualSilhouettes: the
 // boxes and planes only prune or decide with a margin above float rounding; the list is
@@ -151,7 +152,12 @@ class DualEdgeBvh {
 
   const SilhouetteCaster& caster_;
   std::vector<Node> nodes_;                 // nodes_[0] is the root
-  std::vector<glm::vec4> leafPlanes_;       // per edge in leaf order: face0's and face1's unit planes
+  // The edges in leaf order, four to a group, their faces' unit planes stored component by
+  // component: planes[0..3][lane] face0's x, y, z, w; planes[4..7][lane] face1's.
+  struct alignas(16) PlaneGroup {
+    float planes[8][4];
+  };
+  std::vector<PlaneGroup> leafPlanes_;
   std::vector<std::uint32_t> leafEdges_;    // per edge in leaf order: its index in the caster
   std::vector<std::uint32_t> always_;       // border edges and edges by a degenerate face
   float cornerScale_ = 0.0f;                // the largest |a| of a face's first corner, for the margin
