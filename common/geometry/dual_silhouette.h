@@ -106,18 +106,19 @@ class DualSilhouettes {
 // so a query reaches only the leaves along the silhouette and their ancestors.
 //
 // Layout for a descent: four children per node, their boxes stored axis by axis and tested
-// together (SSE); nodes in depth-first order; a leaf's edges consecutive, each with its two
-// faces' unit planes (32 bytes an edge, four edges' planes tested at once), so that a leaf is one
-// run of memory and the caster's
-// arrays are read only for a face too close to edge-on for the planes to decide (then by the brute
-// force's own test, as DualSilhouettes does). Exact on the same terms as DualSilhouettes: the
-// boxes and planes only prune or decide with a margin above float rounding; the list is
-// possibleSilhouetteEdges(caster, light), order and direction included.
+// together (SSE); nodes in depth-first order, visited a level at a time so that a level's loads
+// overlap; a leaf's edges consecutive, their two faces' unit planes stored four edges to a group,
+// component by component (32 bytes an edge, four edges tested at once), so that a leaf is one run
+// of memory. The caster's arrays are read only for a face too close to edge-on for its plane to
+// decide (then by the brute force's own test, as DualSilhouettes does). Exact on the same terms as
+// DualSilhouettes: the boxes and planes only prune or decide with a margin above float rounding;
+// the list is possibleSilhouetteEdges(caster, light), order and direction included.
 class DualEdgeBvh {
  public:
   // Builds the hierarchy over a prepared caster (kept by reference: it must outlive this). maxLeaf:
-  // the most edges a leaf holds (at least 1). Build cost O(E log E) for E edges; memory about
-  // 36 bytes per edge plus the nodes'. Throws std::length_error for 2^31 edges or more.
+  // the most edges a leaf holds, clamped to 1..255. Build cost O(E log E) for E edges; memory
+  // 36 bytes an edge and 192 a node (about one node per 18 edges with the default leaves). Throws
+  // std::length_error for 2^31 edges or more.
   explicit DualEdgeBvh(const SilhouetteCaster& caster, std::size_t maxLeaf = 8);
 
   // As DualSilhouettes::query and ::descend: the possible silhouette edges for a homogeneous light
