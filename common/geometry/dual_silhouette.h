@@ -20,11 +20,26 @@
 #pragma once
 #include <cstdint>
 #include <glm/vec4.hpp>
+#include <utility>
 #include <vector>
 
 #include "geometry/shadow_volume.h"
 
 namespace stencil {
+
+namespace detail {
+// The last light descended for and its answer: the cache query() keys on (Wallner, section 4:
+// the query reruns on relative motion only).
+struct LastSilhouette {
+  bool valid = false;
+  glm::vec4 light{0.0f};
+  std::vector<SilhouetteEdge> edges;
+  std::size_t run = 0, reused = 0;  // calls that descended, calls that reused `edges`
+  // Copies the answer into `out` and counts a reuse when `light` is the last one bit for bit.
+  bool reuse(const glm::vec4& light, std::vector<SilhouetteEdge>& out);
+  void keep(const glm::vec4& light, const std::vector<SilhouetteEdge>& out);
+};
+}  // namespace detail
 
 class DualSilhouettes {
  public:
@@ -51,8 +66,8 @@ class DualSilhouettes {
   };
   const QueryStats& lastQuery() const { return stats_; }
   // How many calls descended the tree, and how many reused the previous answer, since it was built.
-  std::size_t queriesRun() const { return queriesRun_; }
-  std::size_t queriesReused() const { return queriesReused_; }
+  std::size_t queriesRun() const { return last_.run; }
+  std::size_t queriesReused() const { return last_.reused; }
   std::size_t cellCount() const { return cells_.size(); }
 
  private:
@@ -74,11 +89,85 @@ class DualSilhouettes {
   int maxDepth_;
   mutable QueryStats stats_;
   mutable std::vector<std::uint32_t> found_;
-  // The last light descended for and its answer: the cache query() keys on.
-  mutable bool cached_ = false;
-  mutable glm::vec4 cachedLight_{0.0f};
-  mutable std::vector<SilhouetteEdge> cachedEdges_;
-  mutable std::size_t queriesRun_ = 0, queriesReused_ = 0;
+  mutable detail::LastSilhouette last_;
+};
+
+// ---- a bounding volume hierarchy over the dual edges ------------------------------------------
+//
+// The same answer, output-sensitive. Sander, Gu, Gortler, Hoppe and Snyder ("Silhouette
+// Clipping", SIGGRAPH 2000, its silhouette extraction) search a tree of edge clusters and skip a
+// cluster when all the faces of its edges face the viewpoint, or all face away, which a pair of
+// anchored cones bounds. Here a cluster is bounded in Wallner's plane space instead: the 4D box of
+// its edges' segments (both faces' unit planes), which the light's hyperplane P.L = 0 misses
+// exactly when P.L keeps one sign over it, that is when no face of the cluster can disagree with
+// another about the light. Where the hextree keeps a segment that crosses a cell's split in that
+// cell, tested by every query that reaches it, here every edge lies in a leaf whose box is fitted
+// to it and its neighbours (split at the median of the segments' centres along the widest axis),
+// so a query reaches only the leaves along the silhouette and their ancestors.
+//
+// Layout for a descent: four children per node, their boxes stored axis by axis and tested
+// together (SSE); nodes in depth-first order, visited a level at a time so that a level's loads
+// overlap; a leaf's edges consecutive, their two faces' unit planes stored four edges to a group,
+// component by component (32 bytes an edge, four edges tested at once), so that a leaf is one run
+// of memory. The caster's arrays are read only for a face too close to edge-on for its plane to
+// decide (then by the brute force's own test, as DualSilhouettes does). Exact on the same terms as
+// DualSilhouettes: the boxes and planes only prune or decide with a margin above float rounding;
+// the list is possibleSilhouetteEdges(caster, light), order and direction included.
+class DualEdgeBvh {
+ public:
+  // Builds the hierarchy over a prepared caster (kept by reference: it must outlive this). maxLeaf:
+  // the most edges a leaf holds, clamped to 1..255. Build cost O(E log E) for E edges; memory
+  // 36 bytes an edge and 192 a node (about one node per 18 edges with the default leaves). Throws
+  // std::length_error for 2^31 edges or more.
+  explicit DualEdgeBvh(const SilhouetteCaster& caster, std::size_t maxLeaf = 8);
+
+  // As DualSilhouettes::query and ::descend: the possible silhouette edges for a homogeneous light
+  // in the caster's space, `out` replaced; query() reuses the last answer for the same light bit for
+  // bit, descend() always descends.
+  void query(const glm::vec4& light, std::vector<SilhouetteEdge>& out) const;
+  void descend(const glm::vec4& light, std::vector<SilhouetteEdge>& out) const;
+
+  // What the last call did: nodes whose children's boxes were tested, edges whose planes were
+  // tested (those of the leaves reached, and the edges always tested), and how many of them needed
+  // the brute force's test (a face within the margin of edge-on). All 0 when it reused the answer.
+  struct QueryStats {
+    std::size_t nodesVisited = 0, edgesTested = 0, exactTests = 0;
+    bool reused = false;
+  };
+  const QueryStats& lastQuery() const { return stats_; }
+  std::size_t queriesRun() const { return last_.run; }
+  std::size_t queriesReused() const { return last_.reused; }
+  std::size_t nodeCount() const { return nodes_.size(); }
+
+ private:
+  struct alignas(64) Node {     // three cache lines
+    float lo[4][4], hi[4][4];  // [axis][child]: the children's boxes in plane space
+    std::uint32_t first[4];    // a child node's index, or a leaf's first edge in leafEdges_
+    std::uint32_t count[4];    // 0 for a child node, else the leaf's number of edges
+    std::uint32_t used = 0;    // one bit per child present
+  };
+  struct Item;
+  void build(std::uint32_t node, Item* begin, Item* end);
+  static void prefetch(const Node* node);
+  void prefetchPlanes(const std::pair<std::uint32_t, std::uint32_t>& leaf) const;
+
+  const SilhouetteCaster& caster_;
+  std::vector<Node> nodes_;                 // nodes_[0] is the root
+  // The edges in leaf order, four to a group, their faces' unit planes stored component by
+  // component: planes[0..3][lane] face0's x, y, z, w; planes[4..7][lane] face1's.
+  struct alignas(16) PlaneGroup {
+    float planes[8][4];
+  };
+  std::vector<PlaneGroup> leafPlanes_;
+  std::vector<std::uint32_t> leafEdges_;    // per edge in leaf order: its index in the caster
+  std::vector<std::uint32_t> always_;       // border edges and edges by a degenerate face
+  float cornerScale_ = 0.0f;                // the largest |a| of a face's first corner, for the margin
+  std::size_t maxLeaf_;
+  mutable QueryStats stats_;
+  mutable std::vector<std::uint32_t> found_, sortSpare_;  // edge << 1 | whether face0 faces the light
+  mutable std::vector<std::uint32_t> level_, next_;  // the descent's nodes, one level at a time
+  mutable std::vector<std::pair<std::uint32_t, std::uint32_t>> leaves_;  // leaves reached: first, count
+  mutable detail::LastSilhouette last_;
 };
 
 }  // namespace stencil

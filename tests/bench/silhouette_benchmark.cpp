@@ -9,15 +9,21 @@
 // for the arrays the prepared version streams (the six per-face floats and the edges' faces).
 // The ratios say how far from memory-bound each extraction is. The halves are timed apart too
 // (faces/edges: the mesh version's two calls; facing/edgepass: the prepared version's), and
-// prepare: building the SilhouetteCaster, once per caster.
+// prepare: building the SilhouetteCaster, once per caster. Then the brute force beside the two
+// dual-space structures of dual_silhouette.h, Wallner's hextree (DualSilhouettes, dual-*) and the
+// hierarchy over the dual edges (DualEdgeBvh, bvh-*), by the light's distance and motion, their
+// builds (dual-prepare, bvh-prepare), and the three for a moving light in alternating batches
+// (paired-turn0.1).
 //
 //   silhouette_benchmark [--quick] [--table FILE.md] [--raw FILE.csv] [benchmark flags]
 //
-// --quick: the three smallest sizes only, and two checks: every silhouette is a set of closed
-// loops (each vertex leaves it as often as it enters it), and the prepared version gives the
-// mesh version's edges; exit 1 if not. --table writes the results as a Markdown table
-// (triangles, ns per triangle, GB/s, ratios to the scans); --raw the CPU time of every repetition
-// of every benchmark as CSV.
+// Before anything is timed, at every size it runs: both dual-space structures give the prepared
+// version's edges, order and direction, for every light of the tables; exit 1 if not. --quick:
+// the three smallest sizes only, and two more checks: every silhouette is a set of closed loops
+// (each vertex leaves it as often as it enters it), and the prepared version gives the mesh
+// version's edges; exit 1 if not. --table writes the results as Markdown tables (triangles, ns
+// per triangle, GB/s, ratios to the scans and to the brute force); --raw the CPU time of every
+// repetition of every benchmark as CSV.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -78,6 +84,13 @@ const DualSilhouettes& dualTree(const std::string& shape, const Size& size) {
   static std::map<std::string, std::unique_ptr<DualSilhouettes>> cache;
   auto& slot = cache[shape + size.name];
   if (!slot) slot = std::make_unique<DualSilhouettes>(silhouetteCaster(shape, size));
+  return *slot;
+}
+
+const DualEdgeBvh& dualBvh(const std::string& shape, const Size& size) {
+  static std::map<std::string, std::unique_ptr<DualEdgeBvh>> cache;
+  auto& slot = cache[shape + size.name];
+  if (!slot) slot = std::make_unique<DualEdgeBvh>(silhouetteCaster(shape, size));
   return *slot;
 }
 
@@ -203,14 +216,46 @@ void prepare(benchmark::State& state, const std::string& shape, const Size& size
   state.counters["triangles"] = static_cast<double>(c.mesh.triangleCount());
 }
 
-// The brute force of part 1 (a SilhouetteCaster's two passes) and the dual-space query for one
-// light: lightCases[which] held still, each dual call a fresh descent of the tree (as if the light
-// had moved by a hair: the cost of one query); or, for which >= 3, the near light moving as
-// motions[which - 3] says, each dual call through DualSilhouettes::query and its cache.
-template <bool Dual>
-void byLight(benchmark::State& state, const std::string& shape, const Size& size, std::size_t which) {
-  const SilhouetteCaster& c = silhouetteCaster(shape, size);
-  const DualSilhouettes* tree = Dual ? &dualTree(shape, size) : nullptr;
+// The three ways to the same edges: part 1's brute force (a SilhouetteCaster's two passes),
+// Wallner's hextree (DualSilhouettes) and the hierarchy over the dual edges (DualEdgeBvh).
+enum class Method { Brute, Hextree, Bvh };
+
+// A caster's three structures, looked up once, outside the timed loops.
+struct Structures {
+  const SilhouetteCaster& caster;
+  const DualSilhouettes& hextree;
+  const DualEdgeBvh& bvh;
+};
+Structures structures(const std::string& shape, const Size& size) {
+  return {silhouetteCaster(shape, size), dualTree(shape, size), dualBvh(shape, size)};
+}
+
+// One call of `method` for the light `towards`: through the dual structures' query() (and its
+// cache) when `cached`, else a fresh descent. Returns the edges the call tested (brute force: 0).
+std::size_t extract(Method method, const Structures& s, const glm::vec4& towards, bool cached,
+                    std::vector<std::uint8_t>& lit, std::vector<SilhouetteEdge>& silhouette) {
+  switch (method) {
+    case Method::Brute:
+      facesLight(s.caster, towards, lit);
+      possibleSilhouetteEdges(s.caster, lit, silhouette);
+      return 0;
+    case Method::Hextree:
+      cached ? s.hextree.query(towards, silhouette) : s.hextree.descend(towards, silhouette);
+      return s.hextree.lastQuery().edgesTested;
+    case Method::Bvh:
+      cached ? s.bvh.query(towards, silhouette) : s.bvh.descend(towards, silhouette);
+      return s.bvh.lastQuery().edgesTested;
+  }
+  return 0;
+}
+
+// One method for one light: lightCases[which] held still, each dual call a fresh descent (as if
+// the light had moved by a hair: the cost of one query); or, for which >= 3, the near light moving
+// as motions[which - 3] says, each dual call through query() and its cache.
+void byLight(benchmark::State& state, Method method, const std::string& shape, const Size& size,
+             std::size_t which) {
+  const Structures all = structures(shape, size);  // built before the clock starts
+  const SilhouetteCaster& c = all.caster;
   const bool moving = which >= std::size(lightCases);
   const float degrees = moving ? motions[which - std::size(lightCases)].degreesPerCall : 0.0f;
   std::vector<std::uint8_t> lit;
@@ -218,23 +263,14 @@ void byLight(benchmark::State& state, const std::string& shape, const Size& size
   std::size_t step = 0, edges = 0, calls = 0, tested = 0;
   for (auto _ : state) {
     const glm::vec4 l = moving ? turnedLight(step++, degrees) : lightCases[which].position;
-    if constexpr (Dual) {
-      if (moving)
-        tree->query(l, silhouette);
-      else
-        tree->descend(l, silhouette);
-    } else {
-      facesLight(c, l, lit);
-      possibleSilhouetteEdges(c, lit, silhouette);
-    }
+    tested += extract(method, all, l, moving, lit, silhouette);
     benchmark::DoNotOptimize(silhouette.data());
     edges += silhouette.size();
-    if constexpr (Dual) tested += tree->lastQuery().edgesTested;
     ++calls;
   }
   state.counters["triangles"] = static_cast<double>(c.faceCount());
   state.counters["silhouette_edges"] = calls ? static_cast<double>(edges) / static_cast<double>(calls) : 0.0;
-  if constexpr (Dual)
+  if (method != Method::Brute)
     state.counters["edges_tested"] = calls ? static_cast<double>(tested) / static_cast<double>(calls) : 0.0;
 }
 
@@ -245,6 +281,52 @@ void dualPrepare(benchmark::State& state, const std::string& shape, const Size& 
     benchmark::DoNotOptimize(&tree);
   }
   state.counters["triangles"] = static_cast<double>(c.faceCount());
+}
+
+void bvhPrepare(benchmark::State& state, const std::string& shape, const Size& size) {
+  const SilhouetteCaster& c = silhouetteCaster(shape, size);
+  for (auto _ : state) {
+    DualEdgeBvh bvh(c);
+    benchmark::DoNotOptimize(&bvh);
+  }
+  state.counters["triangles"] = static_cast<double>(c.faceCount());
+}
+
+// The three methods for the near light turning 0.1 degree before every call, timed in alternating
+// batches within one benchmark (each batch about 20 microseconds of the brute force, each method
+// stepping through the same lights), so that all three see the same moment of the shared machine.
+// Counters: the median over rounds of each dual method's time over the brute force's.
+void pairedMoving(benchmark::State& state, const std::string& shape, const Size& size) {
+  const Structures all = structures(shape, size);
+  const SilhouetteCaster& c = all.caster;
+  std::vector<std::uint8_t> lit;
+  std::vector<SilhouetteEdge> silhouette;
+  const std::size_t batch = std::max<std::size_t>(1, 10000 / c.faceCount());
+  const float degrees = motions[1].degreesPerCall;
+  std::size_t steps[3] = {0, 0, 0};
+  std::vector<double> hextree, bvh;
+  using Clock = std::chrono::steady_clock;
+  for (auto _ : state) {
+    double ns[3];
+    for (Method m : {Method::Brute, Method::Hextree, Method::Bvh}) {
+      std::size_t& step = steps[static_cast<int>(m)];
+      const Clock::time_point t0 = Clock::now();
+      for (std::size_t i = 0; i < batch; ++i) {
+        extract(m, all, turnedLight(step++, degrees), true, lit, silhouette);
+        benchmark::DoNotOptimize(silhouette.data());
+      }
+      ns[static_cast<int>(m)] = std::chrono::duration<double, std::nano>(Clock::now() - t0).count();
+    }
+    hextree.push_back(ns[1] / ns[0]);
+    bvh.push_back(ns[2] / ns[0]);
+  }
+  const auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+  };
+  state.counters["triangles"] = static_cast<double>(c.faceCount());
+  state.counters["hextree_ratio"] = median(hextree);
+  state.counters["bvh_ratio"] = median(bvh);
 }
 
 void scanPrepared(benchmark::State& state, const std::string& shape, const Size& size) {
@@ -362,23 +444,30 @@ bool sameAsMeshVersion(const std::string& shape, const Size& size) {
   return true;
 }
 
-// The dual-space query gives the prepared passes' edges for every light of the table, and for the
-// first steps of the stepped light.
+// Both dual-space structures give the prepared passes' edges, in the same order and direction,
+// for every light of the table and the first steps of every moving light, through query() and
+// through a fresh descent.
 bool dualAsPrepared(const std::string& shape, const Size& size) {
-  const SilhouetteCaster& c = silhouetteCaster(shape, size);
+  const Structures all = structures(shape, size);
+  const SilhouetteCaster& c = all.caster;
   std::vector<SilhouetteEdge> found;
+  std::vector<std::uint8_t> lit;
   auto same = [&](const glm::vec4& l) {
-    dualTree(shape, size).query(l, found);
     const std::vector<SilhouetteEdge> expected = possibleSilhouetteEdges(c, l);
-    if (found.size() != expected.size() || expected.empty()) return false;
-    for (std::size_t i = 0; i < found.size(); ++i)
-      if (found[i].v0 != expected[i].v0 || found[i].v1 != expected[i].v1) return false;
+    if (expected.empty()) return false;
+    for (Method m : {Method::Hextree, Method::Bvh})
+      for (bool cached : {true, false}) {
+        extract(m, all, l, cached, lit, found);
+        if (found.size() != expected.size()) return false;
+        for (std::size_t i = 0; i < found.size(); ++i)
+          if (found[i].v0 != expected[i].v0 || found[i].v1 != expected[i].v1) return false;
+      }
     return true;
   };
   for (const LightCase& l : lightCases)
     if (!same(l.position)) return false;
   for (const Motion& m : motions)
-    for (std::size_t step = 0; step < 10; ++step)
+    for (std::size_t step = 0; step < 20; ++step)
       if (!same(turnedLight(step, m.degreesPerCall))) return false;
   return true;
 }
@@ -424,7 +513,7 @@ class TableReporter : public benchmark::ConsoleReporter {
       row.triangles = run.counters.at("triangles").value;
       if (run.counters.count("silhouette_edges")) row.edges = run.counters.at("silhouette_edges").value;
       if (run.counters.count("edges_tested")) row.tested = run.counters.at("edges_tested").value;
-      for (const char* name : {"extraction_ns", "scan_ns", "ratio", "ratio_quietest"})
+      for (const char* name : {"extraction_ns", "scan_ns", "ratio", "ratio_quietest", "hextree_ratio", "bvh_ratio"})
         if (run.counters.count(name)) row.counters[name].push_back(run.counters.at(name).value);
     }
     ConsoleReporter::ReportRuns(runs);
@@ -517,87 +606,101 @@ void writeTable(const TableReporter& reporter, const std::string& file, const st
   writeDualTable(reporter, out);
 }
 
-// The second table: the dual-space query beside part 1's brute force by the light's distance and
-// motion, and where each wins, from the numbers in it.
+// The second table: both dual-space methods beside part 1's brute force by the light's distance
+// and motion; the third: their builds and the moving light timed in alternating batches; then
+// where each wins, from the numbers in them.
 void writeDualTable(const TableReporter& reporter, std::ofstream& out) {
   out << "\n## Dual space against the brute force, by the light's distance and motion\n\n"
-      << "The possible silhouette edges two ways, identical edges (checked by `--quick`): **brute force**,\n"
-      << "the two passes of part 1 on a `SilhouetteCaster` (every face's facing test, every edge's two\n"
-      << "flags); **dual**, `DualSilhouettes` (common/geometry/dual_silhouette.h), the 4D tree of face\n"
-      << "planes descended only where the light's plane crosses a cell, each edge reached tested exactly.\n"
-      << "Distance, the light held still and the tree descended on every call (`descend`, the cost of one\n"
-      << "query): near (0.9, 1.2, 1.5), 2.1 from the centre of shapes of radius 1 (torus 1.3); far\n"
-      << "(30, 40, 50), 71 away; directional towards (3, 4, 5). Motion, the near light through `query`,\n"
-      << "which descends only when the light moved relative to the caster: still (the same light in the\n"
-      << "caster's space every call: the last answer reused), turn0.1 and turn10 (turned 0.1 or 10\n"
-      << "degrees about y before every call: a descent every call). The brute force has no cache: it\n"
-      << "does all its work on every call. CPU time per call, median of the repetitions; the tree's\n"
-      << "build (dual prepare) is paid once per caster, apart. Edges tested: those the query decided\n"
-      << "exactly, per call (the brute force tests every edge).\n\n"
-      << "| shape | triangles | light | silhouette edges | brute force ns/tri | dual ns/tri | **dual / brute "
-         "force** | dual edges tested | dual prepare ns/tri (once) |\n"
-      << "|---|---:|---|---:|---:|---:|---:|---:|---:|\n";
-  std::map<std::string, std::vector<std::string>> dualWins, bruteWins;  // by light: "sphere 1k"
+      << "The possible silhouette edges three ways, identical edges (checked before timing, at every size\n"
+      << "of this run, for every light below and the first 20 steps of each moving light, through the\n"
+      << "cache and by fresh descents): **brute force**, the two passes of part 1 on a `SilhouetteCaster`\n"
+      << "(every face's facing test, every edge's two flags); **hextree**, `DualSilhouettes`, Wallner's 4D\n"
+      << "tree of face planes (16 children a cell, split at the centre; a segment that crosses a split\n"
+      << "stays in that cell), descended only where the light's plane crosses a cell; **BVH**,\n"
+      << "`DualEdgeBvh`, a hierarchy of boxes fitted to the dual edges (both faces' unit planes; four\n"
+      << "children a node tested at once, median splits, leaves of at most 8 edges stored with their\n"
+      << "planes in tree order; after Sander et al.'s search tree of edge clusters), both in\n"
+      << "common/geometry/dual_silhouette.h. Distance, the light held still and each dual call a fresh\n"
+      << "descent (`descend`, the cost of one query): near (0.9, 1.2, 1.5), 2.1 from the centre of shapes\n"
+      << "of radius 1 (torus 1.3); far (30, 40, 50), 71 away; directional towards (3, 4, 5). Motion, the\n"
+      << "near light through `query`, which descends only when the light moved relative to the caster:\n"
+      << "still (the same light in the caster's space every call: the last answer reused), turn0.1 and\n"
+      << "turn10 (turned 0.1 or 10 degrees about y before every call: a descent every call). The brute\n"
+      << "force has no cache: it does all its work on every call. CPU time per call, median of the\n"
+      << "repetitions; the builds are paid once per caster, apart (next table). Edges tested: those whose\n"
+      << "faces' planes the query tested, per call (the brute force tests every edge).\n\n"
+      << "| shape | triangles | light | silhouette edges | brute force ns/tri | hextree ns/tri | hextree / "
+         "brute force | BVH ns/tri | **BVH / brute force** | hextree edges tested | BVH edges tested |\n"
+      << "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  // Which methods beat the brute force where, by light: "sphere 1k".
+  std::map<std::string, std::vector<std::string>> hextreeWins, hextreeLoses, bvhWins, bvhLoses;
   std::vector<std::string> order;
+  const auto row = [&](const std::string& name) { return reporter.rows.find(name); };
   for (const char* shape : {"sphere", "torus"})
     for (const Size& size : sizes) {
-      const std::string key = std::string("/") + shape + "/" + size.name;
+      const std::string key = std::string("/") + shape + "/" + size.name, label = std::string(shape) + " " + size.name;
       std::vector<std::string> wheres;
       for (const LightCase& l : lightCases) wheres.push_back(l.name);
       for (const Motion& m : motions) wheres.push_back(m.name);
       for (const std::string& where : wheres) {
         // The brute force has no cache: a still light costs it what the near light does.
-        const auto b = reporter.rows.find("prepared-" + (where == "still" ? std::string("near") : where) +
-                                          key),
-                   d = reporter.rows.find("dual-" + where + key);
-        if (b == reporter.rows.end() || d == reporter.rows.end()) continue;
-        const double brute = perTriangle(reporter, b->first), dual = perTriangle(reporter, d->first);
+        const auto b = row("prepared-" + (where == "still" ? std::string("near") : where) + key),
+                   d = row("dual-" + where + key), v = row("bvh-" + where + key);
+        if (b == reporter.rows.end() || d == reporter.rows.end() || v == reporter.rows.end()) continue;
+        const double brute = perTriangle(reporter, b->first), hextree = perTriangle(reporter, d->first),
+                     bvh = perTriangle(reporter, v->first);
         if (std::find(order.begin(), order.end(), where) == order.end()) order.push_back(where);
-        (dual < brute ? dualWins : bruteWins)[where].push_back(std::string(shape) + " " + size.name);
+        (hextree < brute ? hextreeWins : hextreeLoses)[where].push_back(label);
+        (bvh < brute ? bvhWins : bvhLoses)[where].push_back(label);
         char line[512];
-        std::snprintf(line, sizeof line, "| %s | %.0f | %s | %.0f | %.2f | %.2f | **%.2f** | %.0f | %.1f |\n",
-                      shape, b->second.triangles, where.c_str(), d->second.edges, brute, dual, dual / brute,
-                      d->second.tested, perTriangle(reporter, "dual-prepare" + key));
+        std::snprintf(line, sizeof line,
+                      "| %s | %.0f | %s | %.0f | %.2f | %.2f | %.2f | %.3f | **%.3f** | %.0f | %.0f |\n", shape,
+                      b->second.triangles, where.c_str(), v->second.edges, brute, hextree, hextree / brute, bvh,
+                      bvh / brute, d->second.tested, v->second.tested);
         out << line;
       }
     }
-  out << "\nWhere each wins, by light (the faster per call in the table above):\n\n";
+
+  out << "\n## Builds, and the moving light in alternating batches\n\n"
+      << "Each dual structure is built once per caster (CPU ns per triangle, median of the repetitions).\n"
+      << "A moving light (turn0.1) pays the BVH's build back after build / (brute force - BVH) calls,\n"
+      << "from the table above. **paired**: the three methods for the near light turning 0.1 degree a\n"
+      << "call, timed in alternating batches of about 20 us of the brute force inside one benchmark (wall\n"
+      << "time, each method through the same lights), so that all three see the same moment of the\n"
+      << "shared machine: the median of the rounds' ratios to the brute force.\n\n"
+      << "| shape | triangles | hextree build ns/tri | BVH build ns/tri | BVH build repaid after (turn0.1 "
+         "calls) | paired turn0.1: hextree / brute force | **paired turn0.1: BVH / brute force** |\n"
+      << "|---|---:|---:|---:|---:|---:|---:|\n";
+  for (const char* shape : {"sphere", "torus"})
+    for (const Size& size : sizes) {
+      const std::string key = std::string("/") + shape + "/" + size.name;
+      const auto pair = row("paired-turn0.1" + key), b = row("prepared-turn0.1" + key), v = row("bvh-turn0.1" + key);
+      if (pair == reporter.rows.end() || b == reporter.rows.end() || v == reporter.rows.end()) continue;
+      const double saved = perTriangle(reporter, b->first) - perTriangle(reporter, v->first),
+                   build = perTriangle(reporter, "bvh-prepare" + key);
+      char repaid[32] = "never";
+      if (saved > 0.0) std::snprintf(repaid, sizeof repaid, "%.0f", std::ceil(build / saved));
+      char line[512];
+      std::snprintf(line, sizeof line, "| %s | %.0f | %.1f | %.1f | %s | %.2f | **%.3f** |\n", shape,
+                    b->second.triangles, perTriangle(reporter, "dual-prepare" + key), build, repaid,
+                    pair->second.counter("hextree_ratio"), pair->second.counter("bvh_ratio"));
+      out << line;
+    }
+
+  out << "\nWhere each wins against the brute force, by light (the faster per call in the first table):\n\n";
   const auto list = [](const std::vector<std::string>& v) {
     std::string s;
     for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + v[i];
     return s;
   };
+  const auto wins = [&](const std::vector<std::string>& w, const std::vector<std::string>& l) {
+    if (w.empty()) return std::string("at no size");
+    if (l.empty()) return std::string("at every size of both shapes");
+    return "at " + list(w) + " (not at " + list(l) + ")";
+  };
   for (const std::string& where : order)
-    if (dualWins[where].empty())
-      out << "- " << where << ": the brute force, at every size of both shapes.\n";
-    else if (bruteWins[where].empty())
-      out << "- " << where << ": dual space, at every size of both shapes.\n";
-    else
-      out << "- " << where << ": dual space at " << list(dualWins[where]) << "; the brute force at "
-          << list(bruteWins[where]) << ".\n";
-  // A still light pays the tree's build back after build / (brute force - reused answer) calls.
-  double fewest = 1e300, most = 0.0;
-  for (const char* shape : {"sphere", "torus"})
-    for (const Size& size : sizes) {
-      const std::string key = std::string("/") + shape + "/" + size.name;
-      if (!reporter.rows.count("prepared-near" + key) || !reporter.rows.count("dual-still" + key) ||
-          !reporter.rows.count("dual-prepare" + key))
-        continue;
-      const double saved =
-          perTriangle(reporter, "prepared-near" + key) - perTriangle(reporter, "dual-still" + key);
-      if (saved <= 0.0) continue;
-      const double calls = perTriangle(reporter, "dual-prepare" + key) / saved;
-      fewest = std::min(fewest, calls);
-      most = std::max(most, calls);
-    }
-  if (most > 0.0) {
-    char line[256];
-    std::snprintf(line, sizeof line,
-                  "\nA still light is the one case dual space wins: it answers from the last query. It pays\n"
-                  "the tree's build back after %.0f to %.0f still calls.\n",
-                  fewest, most);
-    out << line;
-  }
+    out << "- " << where << ": the BVH " << wins(bvhWins[where], bvhLoses[where]) << "; the hextree "
+        << wins(hextreeWins[where], hextreeLoses[where]) << ".\n";
 }
 
 void writeRaw(const TableReporter& reporter, const std::string& file) {
@@ -650,23 +753,26 @@ int main(int argc, char** argv) {
           {"facing", facing},
           {"edgepass", edgepass},
           {"prepare", prepare},
-          {"dual-prepare", dualPrepare}};
+          {"dual-prepare", dualPrepare},
+          {"bvh-prepare", bvhPrepare},
+          {"paired-turn0.1", pairedMoving}};
       for (const auto& [name, run] : runs)
         benchmark::RegisterBenchmark((name + key).c_str(), run, std::string(shape), size);
       for (std::size_t k = 0; k < std::size(lightCases) + std::size(motions); ++k) {
         const std::string where =
             k < std::size(lightCases) ? lightCases[k].name : motions[k - std::size(lightCases)].name;
         const std::string s = shape;
-        if (where != "still")  // the brute force has no cache: still costs what near does
-          benchmark::RegisterBenchmark(
-              ("prepared-" + where + key).c_str(),
-              [s, &size, k](benchmark::State& st) { byLight<false>(st, s, size, k); });
-        benchmark::RegisterBenchmark(("dual-" + where + key).c_str(),
-                                     [s, &size, k](benchmark::State& st) { byLight<true>(st, s, size, k); });
+        for (const auto& [prefix, method] : {std::pair{"prepared-", Method::Brute},
+                                             std::pair{"dual-", Method::Hextree}, std::pair{"bvh-", Method::Bvh}}) {
+          if (method == Method::Brute && where == "still") continue;  // no cache: still costs what near does
+          benchmark::RegisterBenchmark((prefix + where + key).c_str(), [s, &size, k, method](benchmark::State& st) {
+            byLight(st, method, s, size, k);
+          });
+        }
       }
-      if (quick && !dualAsPrepared(shape, size)) {
+      if (!dualAsPrepared(shape, size)) {  // at every size, before anything is timed
         std::cerr << shape << " " << size.name
-                  << ": the dual-space silhouette differs from the prepared one\n";
+                  << ": a dual-space silhouette differs from the prepared one\n";
         return 1;
       }
       if (quick && !closedLoops(caster(shape, size))) {

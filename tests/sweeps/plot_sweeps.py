@@ -420,8 +420,9 @@ def plot_csg(path):
 def plot_silhouette_extraction(path):
     """tests/bench/silhouette_benchmark's raw CSV: ns per triangle against triangles. Left, the
     brute force (the prepared passes) against the scan of its arrays and the mesh version; right,
-    the dual-space query by the light's distance and motion beside the brute force for the same
-    light, and the tree's build (once per caster)."""
+    the two dual-space structures (Wallner's hextree, the BVH over the dual edges) by the light's
+    distance and motion beside the brute force for the same light, and their builds (once per
+    caster)."""
     rows = read_rows(path, ["triangles", "median_cpu_ns"], text=["benchmark"])
     series = {}
     for r in rows:
@@ -452,12 +453,15 @@ def plot_silhouette_extraction(path):
     line(scan, "prepare", "preparing the caster (once)", "C2", "^-")
     line(dual, "prepared-near", "brute force, near light", "C0")
     line(dual, "prepared-far", "brute force, far light", "C9")
-    line(dual, "dual-near", "dual, near light", "C1")
-    line(dual, "dual-far", "dual, far light", "C5")
-    line(dual, "dual-directional", "dual, directional", "C6")
-    line(dual, "dual-turn10", "dual, near light turning 10 deg a call", "C4")
-    line(dual, "dual-still", "dual, still light (answer reused)", "C8", "v-")
-    line(dual, "dual-prepare", "dual tree build (once)", "C2", "^-")
+    line(dual, "prepared-turn0.1", "brute force, near light turning 0.1 deg a call", "C7")
+    line(dual, "dual-near", "hextree, near light", "C1")
+    line(dual, "dual-turn0.1", "hextree, turning 0.1 deg a call", "C5")
+    line(dual, "dual-prepare", "hextree build (once)", "C2", "^-")
+    line(dual, "bvh-near", "BVH, near light", "C3")
+    line(dual, "bvh-far", "BVH, far light", "C6")
+    line(dual, "bvh-directional", "BVH, directional", "C8")
+    line(dual, "bvh-turn0.1", "BVH, turning 0.1 deg a call", "C4")
+    line(dual, "bvh-prepare", "BVH build (once)", "C2", "v-")
     from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
 
     for ax in (scan, dual):
