@@ -8,13 +8,15 @@
 #include <stb_image_write.h>
 #include <unistd.h>
 
+#include <array>
 #include <cerrno>
 #include <climits>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <random>
-#include <utility>
 #include <stdexcept>
+#include <utility>
 
 #include "gl/errors.h"
 
@@ -164,21 +166,33 @@ bool giveName(Writing& w) {
   return false;
 }
 
-// Holds off SIGINT, SIGTERM and SIGHUP while it lives: they arrive once it ends.
+// Holds off SIGINT, SIGTERM and SIGHUP while it lives: a handler (process-wide, so whichever thread
+// the signal reaches, the GL driver's included) notes the signal, and the destructor puts the
+// old actions back and raises it, so that it does what it would have done, once the set is named.
+volatile std::sig_atomic_t heldSignal = 0;
+extern "C" void noteSignal(int sig) {
+  heldSignal = sig;
+}
 class SignalsHeld {
  public:
   SignalsHeld() {
-    sigset_t set;
-    sigemptyset(&set);
-    for (const int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&set, sig);
-    sigprocmask(SIG_BLOCK, &set, &old_);
+    struct sigaction hold {};
+    hold.sa_handler = noteSignal;
+    sigemptyset(&hold.sa_mask);
+    for (std::size_t i = 0; i < kSignals.size(); ++i) sigaction(kSignals[i], &hold, &old_[i]);
   }
-  ~SignalsHeld() { sigprocmask(SIG_SETMASK, &old_, nullptr); }
+  ~SignalsHeld() {
+    for (std::size_t i = 0; i < kSignals.size(); ++i) sigaction(kSignals[i], &old_[i], nullptr);
+    const int sig = heldSignal;
+    heldSignal = 0;
+    if (sig != 0) std::raise(sig);
+  }
   SignalsHeld(const SignalsHeld&) = delete;
   SignalsHeld& operator=(const SignalsHeld&) = delete;
 
  private:
-  sigset_t old_;
+  static constexpr std::array<int, 3> kSignals{SIGINT, SIGTERM, SIGHUP};
+  std::array<struct sigaction, 3> old_{};
 };
 
 // Room for `count` more open files: the soft limit raised towards the hard one where needed.
