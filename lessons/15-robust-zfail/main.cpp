@@ -244,34 +244,42 @@ class RobustZFail final : public Lesson {
         continue;
       }
       const glm::vec4 light = glm::inverse(models[i]) * worldLight;
+      const std::vector<bool> lit = facesLight(o.caster.mesh, light);
       const ClosedVolume v = closedVolume(o.caster.mesh, o.caster.adjacency, light, reach);
       f.count("silhouette_edges", v.possibleSilhouetteEdges);
       f.count("side_triangles", v.sideTriangles);
       f.count("light_cap_triangles", v.lightCapTriangles);
       f.count("dark_cap_triangles", v.darkCapTriangles);
-      // How deep this volume can nest (geometry/shadow_volume.h): past a group's 127, the
-      // caster is counted in pieces of its light cap instead, each at most 127 deep.
+      // How deep this volume can nest (geometry/shadow_volume.h): the face count, half the
+      // silhouette, or the silhouette seen from the light, whichever is least. Past a group's
+      // 127, the caster is counted in pieces of its light cap instead, each at most 127 deep.
       const BoundingSphere& b = casterBounds_[i];
       const bool outside = light.w == 0.0f || glm::distance(glm::vec3(light) / light.w, b.centre) > b.radius;
-      const std::size_t nesting =
-          nestingBound(v.lightCapTriangles, v.possibleSilhouetteEdges, convex_[i], outside);
+      std::size_t nesting = nestingBound(v.lightCapTriangles, v.possibleSilhouetteEdges, convex_[i], outside);
+      if (nesting > 1)
+        nesting = std::min(nesting, projectedNestingBound(o.caster.mesh, lit,
+                                                          possibleSilhouetteEdges(o.caster.adjacency, lit), light));
       std::vector<ClosedVolume> parts;
+      std::vector<std::size_t> partNesting;
       if (nesting <= 127) {
         parts.push_back(v);
+        partNesting.push_back(nesting);
       } else {
-        for (const std::vector<bool>& lit : litFacePieces(facesLight(o.caster.mesh, light), 127))
-          parts.push_back(closedVolume(o.caster.mesh, o.caster.adjacency, light, reach, lit));
+        for (const LitPiece& piece : litFacePieces(o.caster.mesh, o.caster.adjacency, lit, light, 127)) {
+          parts.push_back(closedVolume(o.caster.mesh, o.caster.adjacency, light, reach, piece.lit));
+          partNesting.push_back(piece.nesting);
+        }
         f.count("volume_pieces", parts.size());
       }
       std::vector<glm::vec4> vertices;
-      for (const ClosedVolume& part : parts) {
+      for (std::size_t k = 0; k < parts.size(); ++k) {
+        const ClosedVolume& part = parts[k];
         const auto first = static_cast<GLint>(vertices.size());
         // Without caps only the sides, which come first.
         const std::size_t triangles = f.on("caps") ? part.triangles.triangleCount() : part.sideTriangles;
         vertices.insert(vertices.end(), part.triangles.vertices.begin(),
                         part.triangles.vertices.begin() + static_cast<std::ptrdiff_t>(3 * triangles));
-        pieces.push_back({i, first, static_cast<GLsizei>(3 * triangles),
-                          parts.size() == 1 ? nesting : std::min<std::size_t>(part.lightCapTriangles, 127)});
+        pieces.push_back({i, first, static_cast<GLsizei>(3 * triangles), partNesting[k]});
       }
       volumes_[slot]->upload(vertices);
     }

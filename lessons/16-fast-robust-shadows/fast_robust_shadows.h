@@ -60,7 +60,7 @@ class FastRobustShadows final : public Lesson {
   void buildVolume(Frame& f, std::size_t c, const glm::vec4& worldLight, int shadowCase,
                    const Recipe& recipe);
   static std::size_t nestingOf(const Caster& c, const PreparedCaster& p, const glm::vec4& light,
-                               const std::vector<bool>& lit, std::size_t edges);
+                               const std::vector<bool>& lit, const std::vector<SilhouetteEdge>& edges);
   void countVolumes(Frame& f, const glm::vec4& light);
   void countVolume(const Frame& f, const LightVolume& lv, const glm::vec4& worldLight);
   void foldCount();

@@ -256,18 +256,18 @@ void FastRobustShadows::buildVolume(Frame& f, std::size_t c, const glm::vec4& wo
       possibleSilhouette(caster, p, light, lit, f.option("silhouettes"));
   VolumeIndices built = volumeOf(p, light, recipe, lit, edges, f.on("split"));
   built.volume.shadowCase = shadowCase;
-  const std::size_t nesting = nestingOf(caster, p, light, lit, edges.size());
+  const std::size_t nesting = nestingOf(caster, p, light, lit, edges);
   std::vector<LightVolume> volumes{{c, 0, built.volume, nesting, false}};
   if (nesting > 127 && p.report.closedManifold()) {
     volumes.clear();
     built.indices.clear();
     built.split.clear();
     const Recipe full{true, light.w == 0.0f ? DarkCapKind::None : DarkCapKind::Piece, true};
-    for (const std::vector<bool>& piece : litFacePieces(lit, 127)) {
-      VolumeIndices v = volumeOf(p, light, full, piece, possibleSilhouetteEdges(p.adjacency, piece), false);
+    for (const LitPiece& piece : litFacePieces(p.mesh, p.adjacency, lit, light, 127)) {
+      VolumeIndices v =
+          volumeOf(p, light, full, piece.lit, possibleSilhouetteEdges(p.adjacency, piece.lit), false);
       v.volume.shadowCase = shadowCase;
-      volumes.push_back({c, built.indices.size(), v.volume,
-                         static_cast<std::size_t>(std::count(piece.begin(), piece.end(), true)), true});
+      volumes.push_back({c, built.indices.size(), v.volume, piece.nesting, true});
       built.indices.insert(built.indices.end(), v.indices.begin(), v.indices.end());
     }
   }
@@ -276,16 +276,19 @@ void FastRobustShadows::buildVolume(Frame& f, std::size_t c, const glm::vec4& wo
   lightVolumes_.insert(lightVolumes_.end(), volumes.begin(), volumes.end());
 }
 
-// The most a caster's volume adds to a pixel's count (geometry/shadow_volume.h's nestingBound).
+// The most a caster's volume adds to a pixel's count (geometry/shadow_volume.h's nestingBound, and
+// for a closed caster projectedNestingBound: its silhouette seen from the light).
 std::size_t FastRobustShadows::nestingOf(const Caster& c, const PreparedCaster& p, const glm::vec4& light,
-                                         const std::vector<bool>& lit, std::size_t edges) {
+                                         const std::vector<bool>& lit, const std::vector<SilhouetteEdge>& edges) {
   if (c.convex) return 1;
   const bool outside =
       light.w == 0.0f || glm::distance(glm::vec3(light) / light.w, c.bounds.centre) > c.bounds.radius;
   // An open caster casts from both sides, and a fold of it changes the count by two.
-  if (!p.report.closedManifold()) return nestingBound(p.mesh.indices.size() / 3, 2 * edges, false, outside);
-  return nestingBound(static_cast<std::size_t>(std::count(lit.begin(), lit.end(), true)), edges, false,
-                      outside);
+  if (!p.report.closedManifold())
+    return nestingBound(p.mesh.indices.size() / 3, 2 * edges.size(), false, outside);
+  const std::size_t bound =
+      nestingBound(static_cast<std::size_t>(std::count(lit.begin(), lit.end(), true)), edges.size(), false, outside);
+  return bound <= 1 ? bound : std::min(bound, projectedNestingBound(p.mesh, lit, edges, light));
 }
 
 // ---- counting the volumes in the stencil ----------------------------------------------------
