@@ -76,6 +76,22 @@ std::vector<bool> facesLight(const Mesh& mesh, const glm::vec4& light) {
   return lit;
 }
 
+std::vector<std::uint32_t> facesTurnedFromLight(const Mesh& mesh, const glm::vec4& light, const glm::vec4& eye) {
+  validateMesh(mesh);
+  std::vector<std::uint32_t> faces;
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+    const float seen = facing(mesh, t, eye);
+    if (seen == 0.0f) continue;
+    const bool lit = facing(mesh, t, light) > 0.0f;  // as facesLight
+    // The side the eye sees faces the light when the eye sees the front of a lit face (or the
+    // back of an unlit one).
+    if (lit == (seen > 0.0f)) continue;
+    faces.insert(faces.end(), mesh.indices.begin() + static_cast<std::ptrdiff_t>(3 * t),
+                 mesh.indices.begin() + static_cast<std::ptrdiff_t>(3 * t + 3));
+  }
+  return faces;
+}
+
 std::vector<SilhouetteEdge> possibleSilhouetteEdges(const EdgeAdjacency& adjacency,
                                                     const std::vector<bool>& lit) {
   std::vector<SilhouetteEdge> silhouette;

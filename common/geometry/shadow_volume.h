@@ -35,6 +35,16 @@ glm::vec4 extrudeAway(const glm::vec3& point, const glm::vec4& light, float dist
 // degenerate one) does not, so it casts no volume of its own.
 std::vector<bool> facesLight(const Mesh& mesh, const glm::vec4& light);
 
+// The faces whose side the eye sees is turned from the light: the eye and the light on opposite
+// sides of the face's plane, decided with the float operations facesLight decides facing with (a
+// face edge-on to the light is turned from it seen from the front, as facesLight calls it unlit).
+// Such a side of a caster lies in the caster's own shadow: the segment from the light reaches it
+// through the caster's inside, or, for an open caster, through the face itself. Faces edge-on to
+// the eye (never seen) are left out. Returns their indices, three per face, in face order. light
+// and eye homogeneous in the mesh's space (w = 0: the direction towards the light, or towards
+// the eye of a parallel view).
+std::vector<std::uint32_t> facesTurnedFromLight(const Mesh& mesh, const glm::vec4& light, const glm::vec4& eye);
+
 // A directed edge (v0 -> v1) that extrudes into a quad facing out of the volume: the way the
 // lit face walks it.
 struct SilhouetteEdge {

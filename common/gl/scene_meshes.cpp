@@ -1,6 +1,7 @@
 #include "gl/scene_meshes.h"
 
 #include "geometry/fast_shadows.h"
+#include "geometry/shadow_volume.h"
 #include "gl/light_shading.h"
 
 namespace stencil {
@@ -56,6 +57,21 @@ void SceneMeshes::draw(const Scene& scene, const glm::mat4& viewProjection, cons
     meshes_[i]->draw();
   }
   glEnable(GL_CULL_FACE);
+}
+
+void SceneMeshes::drawTurnedFromLight(const Scene& scene, const glm::mat4& viewProjection, const glm::vec4& light,
+                                      const glm::vec4& eye) {
+  setLightShading(light_, {.viewProjection = viewProjection});  // the positions draw() gave
+  glDisable(GL_CULL_FACE);
+  for (std::size_t i = 0; i < meshes_.size(); ++i) {
+    const SceneObject& o = scene.objects[i];
+    if (!o.casts) continue;
+    const glm::mat4 toObject = glm::inverse(models_[i]);
+    Mesh turned{o.mesh.positions, o.mesh.normals, facesTurnedFromLight(o.mesh, toObject * light, toObject * eye)};
+    if (turned.indices.empty()) continue;
+    light_.set("model", models_[i]);
+    GpuMesh(turned).draw();
+  }
 }
 
 }  // namespace stencil

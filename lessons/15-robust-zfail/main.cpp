@@ -17,8 +17,10 @@
 // reversed: 1 at the near plane, n/d at distance d, 0 at infinity. A 24-bit buffer with GL's
 // mapping 1 - n/d has steps of d^2/n * 2^-24 units, too coarse for a small near plane; a float
 // holding n/d keeps about 2^-24 of d at every distance. The variant pinf-fixed24 keeps the old path.
-// One pass with two-sided stencil and wrapping counts both kinds of faces. Each light then
-// adds its light where its count is zero, over one ambient pass. The scene is a Scene
+// One pass with two-sided stencil and wrapping counts both kinds of faces; the casters' sides
+// turned from the light, which the count puts in their own volumes, are then marked shadowed
+// outright (markTurnedFromLight: near the terminator the sides run within rounding of them). Each
+// light then adds its light where its stencil is zero, over one ambient pass. The scene is a Scene
 // (geometry/scene.h): the one built in below, or one read from a file with --scene.
 
 #include <algorithm>
@@ -160,6 +162,7 @@ class RobustZFail final : public Lesson {
           f.count("count_groups", static_cast<std::uint64_t>(plan.groups));
         }
         glDisable(GL_DEPTH_CLAMP);
+        markTurnedFromLight(f, models, lights[i].light.position);
         f.pass("volumes", which);
         f.shadowMask("light-" + std::to_string(lights[i].index));  // under --mask-out: this light's mask
 
@@ -305,6 +308,36 @@ class RobustZFail final : public Lesson {
     std::vector<std::size_t> bounds;
     for (const VolumePiece& p : pieces_[lightIndex]) bounds.push_back(p.nesting);
     return bounds;
+  }
+
+  // A caster's side turned from the light, where the eye sees it, lies in the caster's own shadow:
+  // the light reaches it through the caster. Its volume says so with a count of 1 or more, but
+  // near the terminator, on faces a few hundredths or less from edge-on, the sides of the possible
+  // silhouette run within a few millionths of the eye's distance behind the surface, and the
+  // rasterizer's depths can round one in front of it: a pixel counted 0, lit. Bit 7 set on those
+  // faces (facesTurnedFromLight, decided per face as facesLight decides), at exactly their depths
+  // (GL_EQUAL, the ambient pass's program), makes the rule hold whatever the count rounded to.
+  void markTurnedFromLight(const Frame& f, const std::vector<glm::mat4>& models, const glm::vec4& worldLight) {
+    const bool parallel = f.projection[2][3] == 0.0f;  // clip w does not depend on depth
+    const glm::vec4 worldEye =
+        parallel ? glm::vec4(glm::vec3(glm::inverse(f.view)[2]), 0.0f) : glm::vec4(f.eye, 1.0f);
+    glStencilMask(0x80);
+    glStencilFunc(GL_ALWAYS, 0x80, 0x80);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    glDepthFunc(GL_EQUAL);
+    setLightShading(light_, {.viewProjection = depth_.projection * f.view});  // the ambient pass's positions
+    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+      const SceneObject& o = scene_.objects[i];
+      if (!o.casts || solids_.room[i]) continue;  // a room shadows nothing inside itself
+      const glm::mat4 toObject = glm::inverse(models[i]);
+      Mesh turned{o.mesh.positions, o.mesh.normals,
+                  facesTurnedFromLight(o.mesh, toObject * worldLight, toObject * worldEye)};
+      if (turned.indices.empty()) continue;
+      light_.set("model", models[i]);
+      GpuMesh(turned).draw();
+    }
+    glDepthFunc(depth_.less);
+    glStencilMask(0xFF);
   }
 
   // Where a group's count (bits 0-6) is not 0, the pixel is in a shadow: set bit 7 and clear the

@@ -27,7 +27,9 @@
 //      EXT_depth_bounds_test;
 //   7. the rendering system of section 8 (render below): an ambient pass fills the depth
 //      buffer, then per light the stencil cleared, its volumes counted (countVolume has the
-//      stencil operations), and its light added where the stencil is 0, into a float target
+//      stencil operations), the casters' sides turned from it marked shadowed (markTurnedFromLight:
+//      the rule the count states, made to hold where its sides round), and its light added where
+//      the stencil is 0, into a float target
 //      (gl/accumulation_target.h) so many lights do not band.
 // Scene files may also bring open meshes, whose faces block light from both sides (a volume
 // from each side), and more nested volumes than 8 bits count (buildVolume, countVolumes).
@@ -177,6 +179,7 @@ void FastRobustShadows::render(Frame& f) {
     if (f.on("shadow")) {
       buildVolumes(f, light.position, clip, occlusionPyramid(nearRect, light.position), frustum);
       countVolumes(f, light.position);
+      markTurnedFromLight(f, light.position);
     }
     if (depthBounds) glDisable(GL_DEPTH_BOUNDS_TEST_EXT);
     endPass(f, "shadows", which, index);
@@ -336,6 +339,28 @@ void FastRobustShadows::countVolume(const Frame& f, const LightVolume& lv, const
     caster.gpu->draw(lv.first + v.sides + v.darkCap, v.lightCap);
     glDepthFunc(depth_.less);
   }
+}
+
+// A caster's side turned from the light, where the eye sees it, lies in the caster's own shadow:
+// the light reaches it through the caster. Its volume says so with a count of 1 or more, but
+// near the terminator, on faces a few hundredths or less from edge-on, the sides of the possible
+// silhouette run within a few millionths of the eye's distance behind the surface, and the
+// rasterizer's depths can round one in front of it: a pixel counted 0, lit. Bit 7 set on those
+// faces (facesTurnedFromLight, decided per face as facesLight decides), at exactly their depths
+// (GL_EQUAL, the ambient pass's program), makes the rule hold whatever the count rounded to.
+void FastRobustShadows::markTurnedFromLight(const Frame& f, const glm::vec4& light) {
+  const bool parallel = f.projection[2][3] == 0.0f;  // clip w does not depend on depth
+  const glm::vec4 eye = parallel ? glm::vec4(glm::vec3(glm::inverse(f.view)[2]), 0.0f) : glm::vec4(f.eye, 1.0f);
+  glEnable(GL_STENCIL_TEST);
+  glStencilMask(0x80);
+  glStencilFunc(GL_ALWAYS, 0x80, 0x80);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  glDepthFunc(GL_EQUAL);
+  meshes_.drawTurnedFromLight(scene_, depth_.projection * f.view, light, eye);
+  glDepthFunc(depth_.less);
+  glStencilMask(0xFF);
+  glDisable(GL_STENCIL_TEST);
+  glEnable(GL_CULL_FACE);  // the scene's own culling again
 }
 
 // Where a group's count (bits 0-6) is not 0, the pixel is in a shadow: set bit 7 and clear the

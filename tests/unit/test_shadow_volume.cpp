@@ -502,3 +502,24 @@ TEST(NestedVolumes, PiecesAreWholeRegionsOfLitFaces) {
   EXPECT_EQ(deepest, 12);
   EXPECT_THROW(litFacePieces(stairs, adjacency, lit, light, 0), std::invalid_argument);
 }
+
+TEST(ShadowVolume, FacesTurnedFromLightAreThoseWhoseSeenSideTheLightMisses) {
+  // A cube of half size 0.5 (12 triangles), the light above it, the eye in front of it. The front
+  // face (+z) faces away from the light and towards the eye. The top face faces the light, but
+  // the eye lies below its plane and sees its other side. The bottom, back and x faces have the
+  // light and the eye on the same side of their planes (behind them).
+  const Mesh cube = weldByPosition(makeCube(0.5f)).mesh;
+  const glm::vec4 light(0.0f, 5.0f, 0.0f, 1.0f), eye(0.0f, 0.0f, 5.0f, 1.0f);
+  const std::vector<std::uint32_t> turned = facesTurnedFromLight(cube, light, eye);
+  ASSERT_EQ(turned.size(), 12u) << "two faces of two triangles";
+  for (std::size_t t = 0; t < turned.size() / 3; ++t) {
+    const glm::vec3 a = cube.positions[turned[3 * t]], b = cube.positions[turned[3 * t + 1]],
+                    c = cube.positions[turned[3 * t + 2]];
+    const glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
+    EXPECT_TRUE(n == glm::vec3(0, 0, 1) || n == glm::vec3(0, 1, 0)) << n.x << " " << n.y << " " << n.z;
+  }
+  // A parallel view looking down: the top and the bottom have the eye on the light's side, the
+  // other faces are edge-on to the eye.
+  const std::vector<std::uint32_t> fromAbove = facesTurnedFromLight(cube, light, glm::vec4(0, 1, 0, 0));
+  EXPECT_TRUE(fromAbove.empty()) << "the eye on the light's side of every face's plane";
+}
