@@ -47,6 +47,11 @@ void SceneMeshes::draw(const Scene& scene, const glm::mat4& viewProjection, cons
                            .ambient = ambient,
                            .radius = radius,
                            .twoSided = true});
+  // A mirroring model matrix (a negative scale) turns the object's winding round on screen, on top
+  // of whatever the caller's front face says for the view.
+  GLint viewFront = GL_CCW;
+  glGetIntegerv(GL_FRONT_FACE, &viewFront);
+  const GLenum otherFront = viewFront == GL_CCW ? GL_CW : GL_CCW;
   for (std::size_t i = 0; i < meshes_.size(); ++i) {
     light_.set("model", models_[i]);
     light_.set("colour", scene.objects[i].colour);
@@ -54,8 +59,10 @@ void SceneMeshes::draw(const Scene& scene, const glm::mat4& viewProjection, cons
       glEnable(GL_CULL_FACE);  // a closed object's back faces are hidden anyway
     else                       // an open surface is seen from both sides; a cut one through the cut
       glDisable(GL_CULL_FACE);
+    glFrontFace(glm::determinant(glm::mat3(models_[i])) < 0.0f ? otherFront : static_cast<GLenum>(viewFront));
     meshes_[i]->draw();
   }
+  glFrontFace(static_cast<GLenum>(viewFront));
   glEnable(GL_CULL_FACE);
 }
 

@@ -162,7 +162,8 @@ class RobustZFail final : public Lesson {
           f.count("count_groups", static_cast<std::uint64_t>(plan.groups));
         }
         glDisable(GL_DEPTH_CLAMP);
-        markTurnedFromLight(f, models, lights[i].light.position);
+        // The old 24-bit path (pinf-fixed24, or no clip control) keeps the count alone.
+        if (f.on("mark") && f.reversedDepth) markTurnedFromLight(f, models, lights[i].light.position);
         f.pass("volumes", which);
         f.shadowMask("light-" + std::to_string(lights[i].index));  // under --mask-out: this light's mask
 
@@ -314,16 +315,18 @@ class RobustZFail final : public Lesson {
   // the light reaches it through the caster. Its volume says so with a count of 1 or more, but
   // near the terminator, on faces a few hundredths or less from edge-on, the sides of the possible
   // silhouette run within a few millionths of the eye's distance behind the surface, and the
-  // rasterizer's depths can round one in front of it: a pixel counted 0, lit. Bit 7 set on those
-  // faces (facesTurnedFromLight, decided per face as facesLight decides), at exactly their depths
-  // (GL_EQUAL, the ambient pass's program), makes the rule hold whatever the count rounded to.
+  // rasterizer's depths can round one in front of it: a pixel counted 0, lit. Bit 7 set where such
+  // a face reads 0 (facesTurnedFromLight, decided per face as facesLight decides), at exactly its
+  // depths (GL_EQUAL, the ambient pass's program), makes the rule hold whatever the count rounded to.
   void markTurnedFromLight(const Frame& f, const std::vector<glm::mat4>& models, const glm::vec4& worldLight) {
     const bool parallel = f.projection[2][3] == 0.0f;  // clip w does not depend on depth
     const glm::vec4 worldEye =
         parallel ? glm::vec4(glm::vec3(glm::inverse(f.view)[2]), 0.0f) : glm::vec4(f.eye, 1.0f);
+    // Only where the count reads 0: bit 7 set there (INVERT through the mask), every other
+    // count kept as it is.
     glStencilMask(0x80);
-    glStencilFunc(GL_ALWAYS, 0x80, 0x80);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    glStencilFunc(GL_EQUAL, 0, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_INVERT);
     glDepthFunc(GL_EQUAL);
     setLightShading(light_, {.viewProjection = depth_.projection * f.view});  // the ambient pass's positions
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
@@ -564,6 +567,10 @@ LessonInfo lessonInfo() {
       {"directional", 'L', "the first light becomes a directional light", 0},
       {"last", 'K', "the light drawn last, whose count the stencil keeps (--oracle checks it)", 0, 8},
       {"shadow", 'H', "shadows at all (off: every light everywhere)", 1},
+      {"mark", 'U',
+       "after counting, mark the casters' sides turned from the light shadowed (float depth path only;\n"
+       "      off: the count alone)",
+       1},
       {"show", 'X', "draw the volumes translucently and the silhouettes as lines", 0},
   };
   const std::vector<Feature> clamp = {Feature::DepthClamp};
@@ -580,7 +587,7 @@ LessonInfo lessonInfo() {
        {{"lights", 1}, {"zpass", 1}}},
       {"zpass-near-plane",
        "z-pass with the near plane cutting the cube's volume: the entries it clips are lost",
-       {{"lights", 1}, {"zpass", 1}},
+       {{"lights", 1}, {"zpass", 1}, {"mark", 0}},
        {},
        nearPlaneCamera()},
       {"zfail-near-plane",

@@ -179,7 +179,8 @@ void FastRobustShadows::render(Frame& f) {
     if (f.on("shadow")) {
       buildVolumes(f, light.position, clip, occlusionPyramid(nearRect, light.position), frustum);
       countVolumes(f, light.position);
-      markTurnedFromLight(f, light.position);
+      // The old 24-bit path (pinf-fixed24, or no clip control) keeps the count alone.
+      if (f.on("mark") && f.reversedDepth) markTurnedFromLight(f, light.position);
     }
     if (depthBounds) glDisable(GL_DEPTH_BOUNDS_TEST_EXT);
     endPass(f, "shadows", which, index);
@@ -345,16 +346,18 @@ void FastRobustShadows::countVolume(const Frame& f, const LightVolume& lv, const
 // the light reaches it through the caster. Its volume says so with a count of 1 or more, but
 // near the terminator, on faces a few hundredths or less from edge-on, the sides of the possible
 // silhouette run within a few millionths of the eye's distance behind the surface, and the
-// rasterizer's depths can round one in front of it: a pixel counted 0, lit. Bit 7 set on those
-// faces (facesTurnedFromLight, decided per face as facesLight decides), at exactly their depths
-// (GL_EQUAL, the ambient pass's program), makes the rule hold whatever the count rounded to.
+// rasterizer's depths can round one in front of it: a pixel counted 0, lit. Bit 7 set where such
+// a face reads 0 (facesTurnedFromLight, decided per face as facesLight decides), at exactly its
+// depths (GL_EQUAL, the ambient pass's program), makes the rule hold whatever the count rounded to.
 void FastRobustShadows::markTurnedFromLight(const Frame& f, const glm::vec4& light) {
   const bool parallel = f.projection[2][3] == 0.0f;  // clip w does not depend on depth
   const glm::vec4 eye = parallel ? glm::vec4(glm::vec3(glm::inverse(f.view)[2]), 0.0f) : glm::vec4(f.eye, 1.0f);
   glEnable(GL_STENCIL_TEST);
+  // Only where the count reads 0: bit 7 set there (INVERT through the mask), every other
+  // count kept as it is.
   glStencilMask(0x80);
-  glStencilFunc(GL_ALWAYS, 0x80, 0x80);
-  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  glStencilFunc(GL_EQUAL, 0, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_INVERT);
   glDepthFunc(GL_EQUAL);
   meshes_.drawTurnedFromLight(scene_, depth_.projection * f.view, light, eye);
   glDepthFunc(depth_.less);
