@@ -118,6 +118,8 @@ std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objects,
           glm::dot(hit->normal, ray.direction) < 0.0f ? hit->normal : -hit->normal;
       if (objects[hit->object].casts && glm::dot(towardsCamera, toLight) < 0.0f) {
         c = PixelClass::Shadowed;
+        // The other side of the caster's terminator: a surface of its own for the edge test.
+        if (surfaces) (*surfaces)[static_cast<std::size_t>(y * size.x + x)] = static_cast<int>(hit->object + objects.size());
         continue;
       }
       c = occluded(rayTowardsLight(

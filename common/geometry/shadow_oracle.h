@@ -41,7 +41,9 @@ struct OracleObject {
 // faces away from the light is still Lit unless a caster is in the way.
 // lightRadius bounds a point light (geometry/scene.h, SceneLight::radius).
 // When surfaces is given, it receives per pixel the index into the objects of what the camera
-// ray meets, -1 for nothing: where it changes, the pixel lies on a silhouette.
+// ray meets, -1 for nothing, and, where the side of a caster the ray meets is turned from the
+// light, that index plus the number of objects: where it changes, the pixel lies on a
+// silhouette or on a caster's terminator, where its own volume leaves its surface.
 std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>&, const glm::vec4& light,
                                        const glm::mat4& viewProjection, glm::ivec2 size,
                                        float lightRadius = std::numeric_limits<float>::infinity(),
@@ -58,7 +60,9 @@ struct OracleReport {
 // Compares the image's verdict (true: a lit receiver) with the oracle's Lit, pixel by pixel.
 // A pixel is on an edge when a pixel of its 3x3 neighbourhood has another class or, given the
 // surfaces classifyPixels found, another surface: a silhouette, where the rasterizer's coverage
-// and the ray through the pixel centre may see different things.
+// and the ray through the pixel centre may see different things, or a caster's terminator, where
+// the sides of its own volume leave its surface at the faces' grazing angle and lie within
+// rounding of it over the pixels beside the line.
 OracleReport compareWithOracle(const std::vector<PixelClass>& oracle, const std::vector<bool>& litInImage,
                                glm::ivec2 size, const std::vector<int>* surfaces = nullptr);
 

@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "geometry/weld.h"
 
@@ -71,6 +74,22 @@ std::vector<bool> facesLight(const Mesh& mesh, const glm::vec4& light) {
   std::vector<bool> lit(mesh.triangleCount());
   for (std::size_t t = 0; t < lit.size(); ++t) lit[t] = facing(mesh, t, light) > 0.0f;
   return lit;
+}
+
+std::vector<std::uint32_t> facesTurnedFromLight(const Mesh& mesh, const glm::vec4& light, const glm::vec4& eye) {
+  validateMesh(mesh);
+  std::vector<std::uint32_t> faces;
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+    const float seen = facing(mesh, t, eye);
+    if (seen == 0.0f) continue;
+    const bool lit = facing(mesh, t, light) > 0.0f;  // as facesLight
+    // The side the eye sees faces the light when the eye sees the front of a lit face (or the
+    // back of an unlit one).
+    if (lit == (seen > 0.0f)) continue;
+    faces.insert(faces.end(), mesh.indices.begin() + static_cast<std::ptrdiff_t>(3 * t),
+                 mesh.indices.begin() + static_cast<std::ptrdiff_t>(3 * t + 3));
+  }
+  return faces;
 }
 
 std::vector<SilhouetteEdge> possibleSilhouetteEdges(const EdgeAdjacency& adjacency,
@@ -408,6 +427,140 @@ std::vector<std::vector<bool>> litFacePieces(const std::vector<bool>& lit, std::
     pieces.back()[t] = true;
     ++inPiece;
   }
+  return pieces;
+}
+
+namespace {
+
+// The most closed ranges [lo, hi] that hold one x, each widened by pad.
+std::size_t deepestOverlap(std::vector<std::pair<double, double>>& ranges, double pad) {
+  std::vector<std::pair<double, int>> events;  // (x, -1 opens, +1 closes): opens first at a tie
+  events.reserve(2 * ranges.size());
+  for (const auto& [lo, hi] : ranges) {
+    events.push_back({lo - pad, -1});
+    events.push_back({hi + pad, +1});
+  }
+  std::sort(events.begin(), events.end());
+  std::size_t open = 0, deepest = 0;
+  for (const auto& [x, kind] : events) {
+    if (kind < 0) deepest = std::max(deepest, ++open);
+    else --open;
+  }
+  return deepest;
+}
+
+}  // namespace
+
+std::size_t projectedNestingBound(const Mesh& mesh, const std::vector<bool>& lit,
+                                  const std::vector<SilhouetteEdge>& edges, const glm::vec4& light) {
+  if (lit.size() != mesh.indices.size() / 3)
+    throw std::invalid_argument("projectedNestingBound: " + std::to_string(lit.size()) + " lit flags for " +
+                                std::to_string(mesh.indices.size() / 3) + " triangles");
+  constexpr std::size_t kNoBound = std::numeric_limits<std::size_t>::max();
+  const bool directional = light.w == 0.0f;
+  const glm::dvec3 from = directional ? glm::dvec3(0.0) : glm::dvec3(glm::vec3(light) / light.w);
+  // The axis: where the light shines (directional), or from the light to the lit corners' centroid.
+  glm::dvec3 axis(0.0);
+  std::size_t corners = 0;
+  if (directional) {
+    axis = -glm::dvec3(glm::vec3(light));
+  } else {
+    for (std::size_t t = 0; t < lit.size(); ++t)
+      if (lit[t])
+        for (int k = 0; k < 3; ++k, ++corners) axis += glm::dvec3(mesh.positions[mesh.indices[3 * t + k]]) - from;
+    if (corners == 0) return 0;
+  }
+  if (glm::length(axis) == 0.0) return kNoBound;
+  axis = glm::normalize(axis);
+  // Every lit corner strictly in front of the light: then the plane at distance 1 shows them all.
+  if (!directional)
+    for (std::size_t t = 0; t < lit.size(); ++t)
+      if (lit[t])
+        for (int k = 0; k < 3; ++k)
+          if (glm::dot(glm::dvec3(mesh.positions[mesh.indices[3 * t + k]]) - from, axis) <= 0.0) return kNoBound;
+  const glm::dvec3 u = glm::normalize(
+      glm::cross(axis, std::abs(axis.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0)));
+  const glm::dvec3 v = glm::cross(axis, u);
+  const auto image = [&](std::uint32_t i) {
+    const glm::dvec3 d = glm::dvec3(mesh.positions[i]) - from;
+    const double depth = directional ? 1.0 : glm::dot(d, axis);
+    return glm::dvec2(glm::dot(d, u), glm::dot(d, v)) / depth;
+  };
+  std::vector<std::pair<double, double>> xs, ys;
+  xs.reserve(edges.size());
+  ys.reserve(edges.size());
+  double extent = 0.0;
+  for (const SilhouetteEdge& e : edges) {
+    const glm::dvec2 a = image(e.v0), b = image(e.v1);
+    xs.push_back({std::min(a.x, b.x), std::max(a.x, b.x)});
+    ys.push_back({std::min(a.y, b.y), std::max(a.y, b.y)});
+    extent = std::max({extent, std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y)});
+  }
+  const double pad = 1e-9 * extent;
+  return std::min(deepestOverlap(xs, pad), deepestOverlap(ys, pad)) / 2;
+}
+
+std::vector<LitPiece> litFacePieces(const Mesh& mesh, const EdgeAdjacency& adjacency, const std::vector<bool>& lit,
+                                    const glm::vec4& light, std::size_t maxNesting) {
+  if (maxNesting == 0) throw std::invalid_argument("litFacePieces: pieces that count at most 0");
+  if (lit.size() != mesh.indices.size() / 3)
+    throw std::invalid_argument("litFacePieces: " + std::to_string(lit.size()) + " lit flags for " +
+                                std::to_string(mesh.indices.size() / 3) + " triangles");
+  // Regions: lit faces joined through the edges they share (union-find).
+  std::vector<std::size_t> parent(lit.size());
+  for (std::size_t f = 0; f < parent.size(); ++f) parent[f] = f;
+  const auto root = [&](std::size_t f) {
+    while (parent[f] != f) f = parent[f] = parent[parent[f]];
+    return f;
+  };
+  for (const Edge& e : adjacency.edges)
+    if (e.face1 >= 0 && lit[std::size_t(e.face0)] && lit[std::size_t(e.face1)])
+      parent[root(std::size_t(e.face0))] = root(std::size_t(e.face1));
+  // Each region numbered in the order of its first face, with its faces and its silhouette edges
+  // (an edge with one lit face belongs to that face's region).
+  std::vector<std::size_t> regionOf(lit.size(), 0), regionOfRoot(lit.size(), SIZE_MAX);
+  std::vector<std::vector<std::uint32_t>> faces;
+  for (std::size_t f = 0; f < lit.size(); ++f) {
+    if (!lit[f]) continue;
+    std::size_t& r = regionOfRoot[root(f)];
+    if (r == SIZE_MAX) {
+      r = faces.size();
+      faces.emplace_back();
+    }
+    regionOf[f] = r;
+    faces[r].push_back(static_cast<std::uint32_t>(f));
+  }
+  std::vector<std::vector<SilhouetteEdge>> edges(faces.size());
+  for (const Edge& e : adjacency.edges) {
+    const bool lit0 = lit[std::size_t(e.face0)], lit1 = e.face1 >= 0 && lit[std::size_t(e.face1)];
+    if (lit0 && !lit1) edges[regionOf[std::size_t(e.face0)]].push_back({e.v0, e.v1});
+    if (lit1 && !lit0) edges[regionOf[std::size_t(e.face1)]].push_back({e.v1, e.v0});
+  }
+  std::vector<LitPiece> pieces;
+  LitPiece gathering{std::vector<bool>(lit.size(), false), 0};
+  const auto flush = [&] {
+    if (gathering.nesting == 0) return;
+    pieces.push_back(std::move(gathering));
+    gathering = {std::vector<bool>(lit.size(), false), 0};
+  };
+  std::vector<bool> region(lit.size(), false);
+  for (std::size_t r = 0; r < faces.size(); ++r) {
+    for (std::uint32_t f : faces[r]) region[f] = true;
+    const std::size_t bound = std::min(faces[r].size(), projectedNestingBound(mesh, region, edges[r], light));
+    if (bound <= maxNesting) {  // whole, beside the regions before it while their bounds allow
+      if (gathering.nesting + bound > maxNesting) flush();
+      for (std::uint32_t f : faces[r]) gathering.lit[f] = true;
+      gathering.nesting += std::max<std::size_t>(bound, 1);
+    } else {  // too deep by itself: runs of maxNesting faces
+      flush();
+      for (std::vector<bool>& run : litFacePieces(region, maxNesting)) {
+        const auto n = static_cast<std::size_t>(std::count(run.begin(), run.end(), true));
+        pieces.push_back({std::move(run), n});
+      }
+    }
+    for (std::uint32_t f : faces[r]) region[f] = false;
+  }
+  flush();
   return pieces;
 }
 

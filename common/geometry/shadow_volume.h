@@ -35,6 +35,16 @@ glm::vec4 extrudeAway(const glm::vec3& point, const glm::vec4& light, float dist
 // degenerate one) does not, so it casts no volume of its own.
 std::vector<bool> facesLight(const Mesh& mesh, const glm::vec4& light);
 
+// The faces whose side the eye sees is turned from the light: the eye and the light on opposite
+// sides of the face's plane, decided with the float operations facesLight decides facing with (a
+// face edge-on to the light is turned from it seen from the front, as facesLight calls it unlit).
+// Such a side of a caster lies in the caster's own shadow: the segment from the light reaches it
+// through the caster's inside, or, for an open caster, through the face itself. Faces edge-on to
+// the eye (never seen) are left out. Returns their indices, three per face, in face order. light
+// and eye homogeneous in the mesh's space (w = 0: the direction towards the light, or towards
+// the eye of a parallel view).
+std::vector<std::uint32_t> facesTurnedFromLight(const Mesh& mesh, const glm::vec4& light, const glm::vec4& eye);
+
 // A directed edge (v0 -> v1) that extrudes into a quad facing out of the volume: the way the
 // lit face walks it.
 struct SilhouetteEdge {
@@ -203,11 +213,51 @@ bool isConvex(const Mesh& mesh, const EdgeAdjacency& adjacency, bool facesIn = f
 std::size_t nestingBound(std::size_t litFaces, std::size_t possibleSilhouetteEdges, bool convex,
                          bool lightOutside);
 
+// A bound on the same count from the silhouette seen from the light: the count at a point is the
+// number of lit faces whose images, seen from the light, cover the point's direction, and since
+// the lit faces all wind one way in that image, that is the winding number of the image of their
+// boundary, the possible silhouette edges. Projected onto a plane (centrally, onto a plane across
+// the axis from the light to the lit faces' centroid, for a point light; along the light's
+// direction for a directional one) every edge is a segment, and a line x = const leaves the
+// outline on both sides, the winding changing by at most one at each segment it crosses: the
+// winding anywhere on it is at most half the segments whose x-range holds it. The bound is the
+// smaller of the largest such half across x and across y (each range widened by 1e-9 of the
+// image's extent, so rounding can only raise it). A torus crossed at most four times gets 2 or
+// so whatever its tessellation, where half its silhouette edges is hundreds. mesh: object space;
+// lit: one flag per triangle (facesLight, or a part of it); edges: the possible silhouette edges
+// of exactly those faces; light: homogeneous, in the mesh's space. 0 when no face is lit;
+// std::numeric_limits<std::size_t>::max() (no bound) when a lit face's corner does not lie in
+// front of the light along the axis (the light inside or among the faces), where no plane shows
+// them all. Throws std::invalid_argument when lit has the wrong size.
+std::size_t projectedNestingBound(const Mesh& mesh, const std::vector<bool>& lit,
+                                  const std::vector<SilhouetteEdge>& edges, const glm::vec4& light);
+
 // The faces that face the light in pieces of at most maxFaces each, in index order (one flag
-// per triangle per piece): a caster whose count could pass a group's range is counted piece by
-// piece (closedVolume with each piece as `lit`). No pieces when no face faces the light.
-// Throws std::invalid_argument for maxFaces 0.
+// per triangle per piece). No pieces when no face faces the light. Throws
+// std::invalid_argument for maxFaces 0.
 std::vector<std::vector<bool>> litFacePieces(const std::vector<bool>& lit, std::size_t maxFaces);
+
+// A piece of a caster's light cap and the most its volume adds to a pixel's count.
+struct LitPiece {
+  std::vector<bool> lit;  // one flag per triangle: closedVolume's `lit`
+  std::size_t nesting = 0;
+};
+// The faces that face the light in pieces whose volumes each count at most maxNesting: a caster
+// whose count could pass a count group's range is counted piece by piece (closedVolume with
+// each piece as `lit`). The pieces are whole connected regions of lit faces (joined through
+// shared edges), as many together as their bounds (the smaller of their face count and
+// projectedNestingBound) allow; only a region that by itself may count past maxNesting is cut
+// into runs of maxNesting faces in index order. Why whole regions: where two pieces share an
+// edge, each piece's volume has a side hanging from it, inside the caster, and at a pixel whose
+// centre lies on that edge (within the rasterizer's sub-pixel precision) the side's depth and
+// the surface's are equal but for rounding. Counted in one group, the two sides cancel; in two
+// groups, each group's count is off by one there and the pixel is shadowed (issue 29: 321
+// pieces of a torus of 86,400 triangles left 3 to 11 such pixels). Regions share no edge.
+// Needs a closed caster's adjacency (welded vertices); light homogeneous in the mesh's space.
+// Throws std::invalid_argument for maxNesting 0 or lit of the wrong size.
+std::vector<LitPiece> litFacePieces(const Mesh& mesh, const EdgeAdjacency& adjacency,
+                                    const std::vector<bool>& lit, const glm::vec4& light,
+                                    std::size_t maxNesting);
 
 // Which group each volume is counted in, from their nesting bounds in drawing order.
 struct CountPlan {

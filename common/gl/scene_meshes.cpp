@@ -1,6 +1,7 @@
 #include "gl/scene_meshes.h"
 
 #include "geometry/fast_shadows.h"
+#include "geometry/shadow_volume.h"
 #include "gl/light_shading.h"
 
 namespace stencil {
@@ -46,6 +47,11 @@ void SceneMeshes::draw(const Scene& scene, const glm::mat4& viewProjection, cons
                            .ambient = ambient,
                            .radius = radius,
                            .twoSided = true});
+  // A mirroring model matrix (a negative scale) turns the object's winding round on screen, on top
+  // of whatever the caller's front face says for the view.
+  GLint viewFront = GL_CCW;
+  glGetIntegerv(GL_FRONT_FACE, &viewFront);
+  const GLenum otherFront = viewFront == GL_CCW ? GL_CW : GL_CCW;
   for (std::size_t i = 0; i < meshes_.size(); ++i) {
     light_.set("model", models_[i]);
     light_.set("colour", scene.objects[i].colour);
@@ -53,9 +59,26 @@ void SceneMeshes::draw(const Scene& scene, const glm::mat4& viewProjection, cons
       glEnable(GL_CULL_FACE);  // a closed object's back faces are hidden anyway
     else                       // an open surface is seen from both sides; a cut one through the cut
       glDisable(GL_CULL_FACE);
+    glFrontFace(glm::determinant(glm::mat3(models_[i])) < 0.0f ? otherFront : static_cast<GLenum>(viewFront));
     meshes_[i]->draw();
   }
+  glFrontFace(static_cast<GLenum>(viewFront));
   glEnable(GL_CULL_FACE);
+}
+
+void SceneMeshes::drawTurnedFromLight(const Scene& scene, const glm::mat4& viewProjection, const glm::vec4& light,
+                                      const glm::vec4& eye) {
+  setLightShading(light_, {.viewProjection = viewProjection});  // the positions draw() gave
+  glDisable(GL_CULL_FACE);
+  for (std::size_t i = 0; i < meshes_.size(); ++i) {
+    const SceneObject& o = scene.objects[i];
+    if (!o.casts) continue;
+    const glm::mat4 toObject = glm::inverse(models_[i]);
+    Mesh turned{o.mesh.positions, o.mesh.normals, facesTurnedFromLight(o.mesh, toObject * light, toObject * eye)};
+    if (turned.indices.empty()) continue;
+    light_.set("model", models_[i]);
+    GpuMesh(turned).draw();
+  }
 }
 
 }  // namespace stencil

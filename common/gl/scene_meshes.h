@@ -38,6 +38,13 @@ class SceneMeshes {
   // GL_CULL_FACE enabled and the light program bound.
   void draw(const Scene& scene, const glm::mat4& viewProjection, const glm::vec3& eye, const glm::vec4& light,
             const glm::vec3& colour, float radius, const glm::vec3& ambient);
+  // The faces of every casting object whose side the eye sees is turned from `light` (world,
+  // homogeneous): geometry/shadow_volume.h's facesTurnedFromLight, drawn with the light program
+  // through viewProjection, so that their fragments have exactly the depths draw() gave them.
+  // eye: world, homogeneous (w = 0: the direction towards a parallel view's eye). The caller
+  // sets the stencil and depth state; no culling. Uploads the faces anew on each call.
+  void drawTurnedFromLight(const Scene& scene, const glm::mat4& viewProjection, const glm::vec4& light,
+                           const glm::vec4& eye);
   // Object i's triangles alone, with the program and state bound now.
   void drawObject(std::size_t i) const { meshes_[i]->draw(); }
 

@@ -17,8 +17,10 @@
 // reversed: 1 at the near plane, n/d at distance d, 0 at infinity. A 24-bit buffer with GL's
 // mapping 1 - n/d has steps of d^2/n * 2^-24 units, too coarse for a small near plane; a float
 // holding n/d keeps about 2^-24 of d at every distance. The variant pinf-fixed24 keeps the old path.
-// One pass with two-sided stencil and wrapping counts both kinds of faces. Each light then
-// adds its light where its count is zero, over one ambient pass. The scene is a Scene
+// One pass with two-sided stencil and wrapping counts both kinds of faces; the casters' sides
+// turned from the light, which the count puts in their own volumes, are then marked shadowed
+// outright (markTurnedFromLight: near the terminator the sides run within rounding of them). Each
+// light then adds its light where its stencil is zero, over one ambient pass. The scene is a Scene
 // (geometry/scene.h): the one built in below, or one read from a file with --scene.
 
 #include <algorithm>
@@ -160,6 +162,8 @@ class RobustZFail final : public Lesson {
           f.count("count_groups", static_cast<std::uint64_t>(plan.groups));
         }
         glDisable(GL_DEPTH_CLAMP);
+        // The old 24-bit path (pinf-fixed24, or no clip control) keeps the count alone.
+        if (f.on("mark") && f.reversedDepth) markTurnedFromLight(f, models, lights[i].light.position);
         f.pass("volumes", which);
         f.shadowMask("light-" + std::to_string(lights[i].index));  // under --mask-out: this light's mask
 
@@ -244,34 +248,42 @@ class RobustZFail final : public Lesson {
         continue;
       }
       const glm::vec4 light = glm::inverse(models[i]) * worldLight;
+      const std::vector<bool> lit = facesLight(o.caster.mesh, light);
       const ClosedVolume v = closedVolume(o.caster.mesh, o.caster.adjacency, light, reach);
       f.count("silhouette_edges", v.possibleSilhouetteEdges);
       f.count("side_triangles", v.sideTriangles);
       f.count("light_cap_triangles", v.lightCapTriangles);
       f.count("dark_cap_triangles", v.darkCapTriangles);
-      // How deep this volume can nest (geometry/shadow_volume.h): past a group's 127, the
-      // caster is counted in pieces of its light cap instead, each at most 127 deep.
+      // How deep this volume can nest (geometry/shadow_volume.h): the face count, half the
+      // silhouette, or the silhouette seen from the light, whichever is least. Past a group's
+      // 127, the caster is counted in pieces of its light cap instead, each at most 127 deep.
       const BoundingSphere& b = casterBounds_[i];
       const bool outside = light.w == 0.0f || glm::distance(glm::vec3(light) / light.w, b.centre) > b.radius;
-      const std::size_t nesting =
-          nestingBound(v.lightCapTriangles, v.possibleSilhouetteEdges, convex_[i], outside);
+      std::size_t nesting = nestingBound(v.lightCapTriangles, v.possibleSilhouetteEdges, convex_[i], outside);
+      if (nesting > 1)
+        nesting = std::min(nesting, projectedNestingBound(o.caster.mesh, lit,
+                                                          possibleSilhouetteEdges(o.caster.adjacency, lit), light));
       std::vector<ClosedVolume> parts;
+      std::vector<std::size_t> partNesting;
       if (nesting <= 127) {
         parts.push_back(v);
+        partNesting.push_back(nesting);
       } else {
-        for (const std::vector<bool>& lit : litFacePieces(facesLight(o.caster.mesh, light), 127))
-          parts.push_back(closedVolume(o.caster.mesh, o.caster.adjacency, light, reach, lit));
+        for (const LitPiece& piece : litFacePieces(o.caster.mesh, o.caster.adjacency, lit, light, 127)) {
+          parts.push_back(closedVolume(o.caster.mesh, o.caster.adjacency, light, reach, piece.lit));
+          partNesting.push_back(piece.nesting);
+        }
         f.count("volume_pieces", parts.size());
       }
       std::vector<glm::vec4> vertices;
-      for (const ClosedVolume& part : parts) {
+      for (std::size_t k = 0; k < parts.size(); ++k) {
+        const ClosedVolume& part = parts[k];
         const auto first = static_cast<GLint>(vertices.size());
         // Without caps only the sides, which come first.
         const std::size_t triangles = f.on("caps") ? part.triangles.triangleCount() : part.sideTriangles;
         vertices.insert(vertices.end(), part.triangles.vertices.begin(),
                         part.triangles.vertices.begin() + static_cast<std::ptrdiff_t>(3 * triangles));
-        pieces.push_back({i, first, static_cast<GLsizei>(3 * triangles),
-                          parts.size() == 1 ? nesting : std::min<std::size_t>(part.lightCapTriangles, 127)});
+        pieces.push_back({i, first, static_cast<GLsizei>(3 * triangles), partNesting[k]});
       }
       volumes_[slot]->upload(vertices);
     }
@@ -297,6 +309,38 @@ class RobustZFail final : public Lesson {
     std::vector<std::size_t> bounds;
     for (const VolumePiece& p : pieces_[lightIndex]) bounds.push_back(p.nesting);
     return bounds;
+  }
+
+  // A caster's side turned from the light, where the eye sees it, lies in the caster's own shadow:
+  // the light reaches it through the caster. Its volume says so with a count of 1 or more, but
+  // near the terminator, on faces a few hundredths or less from edge-on, the sides of the possible
+  // silhouette run within a few millionths of the eye's distance behind the surface, and the
+  // rasterizer's depths can round one in front of it: a pixel counted 0, lit. Bit 7 set where such
+  // a face reads 0 (facesTurnedFromLight, decided per face as facesLight decides), at exactly its
+  // depths (GL_EQUAL, the ambient pass's program), makes the rule hold whatever the count rounded to.
+  void markTurnedFromLight(const Frame& f, const std::vector<glm::mat4>& models, const glm::vec4& worldLight) {
+    const bool parallel = f.projection[2][3] == 0.0f;  // clip w does not depend on depth
+    const glm::vec4 worldEye =
+        parallel ? glm::vec4(glm::vec3(glm::inverse(f.view)[2]), 0.0f) : glm::vec4(f.eye, 1.0f);
+    // Only where the count reads 0: bit 7 set there (INVERT through the mask), every other
+    // count kept as it is.
+    glStencilMask(0x80);
+    glStencilFunc(GL_EQUAL, 0, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_INVERT);
+    glDepthFunc(GL_EQUAL);
+    setLightShading(light_, {.viewProjection = depth_.projection * f.view});  // the ambient pass's positions
+    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+      const SceneObject& o = scene_.objects[i];
+      if (!o.casts || solids_.room[i]) continue;  // a room shadows nothing inside itself
+      const glm::mat4 toObject = glm::inverse(models[i]);
+      Mesh turned{o.mesh.positions, o.mesh.normals,
+                  facesTurnedFromLight(o.mesh, toObject * worldLight, toObject * worldEye)};
+      if (turned.indices.empty()) continue;
+      light_.set("model", models[i]);
+      GpuMesh(turned).draw();
+    }
+    glDepthFunc(depth_.less);
+    glStencilMask(0xFF);
   }
 
   // Where a group's count (bits 0-6) is not 0, the pixel is in a shadow: set bit 7 and clear the
@@ -523,6 +567,10 @@ LessonInfo lessonInfo() {
       {"directional", 'L', "the first light becomes a directional light", 0},
       {"last", 'K', "the light drawn last, whose count the stencil keeps (--oracle checks it)", 0, 8},
       {"shadow", 'H', "shadows at all (off: every light everywhere)", 1},
+      {"mark", 'U',
+       "after counting, mark the casters' sides turned from the light shadowed (float depth path only;\n"
+       "      off: the count alone)",
+       1},
       {"show", 'X', "draw the volumes translucently and the silhouettes as lines", 0},
   };
   const std::vector<Feature> clamp = {Feature::DepthClamp};
@@ -539,7 +587,7 @@ LessonInfo lessonInfo() {
        {{"lights", 1}, {"zpass", 1}}},
       {"zpass-near-plane",
        "z-pass with the near plane cutting the cube's volume: the entries it clips are lost",
-       {{"lights", 1}, {"zpass", 1}},
+       {{"lights", 1}, {"zpass", 1}, {"mark", 0}},
        {},
        nearPlaneCamera()},
       {"zfail-near-plane",

@@ -60,9 +60,10 @@ class FastRobustShadows final : public Lesson {
   void buildVolume(Frame& f, std::size_t c, const glm::vec4& worldLight, int shadowCase,
                    const Recipe& recipe);
   static std::size_t nestingOf(const Caster& c, const PreparedCaster& p, const glm::vec4& light,
-                               const std::vector<bool>& lit, std::size_t edges);
+                               const std::vector<bool>& lit, const std::vector<SilhouetteEdge>& edges);
   void countVolumes(Frame& f, const glm::vec4& light);
   void countVolume(const Frame& f, const LightVolume& lv, const glm::vec4& worldLight);
+  void markTurnedFromLight(const Frame& f, const glm::vec4& light);
   void foldCount();
   void setExtrusion(const Frame& f, const Caster& c, const glm::vec4& worldLight);
   void endPass(Frame& f, const char* name, const std::string& detail = {}, int mask = -1);

@@ -27,7 +27,9 @@
 //      EXT_depth_bounds_test;
 //   7. the rendering system of section 8 (render below): an ambient pass fills the depth
 //      buffer, then per light the stencil cleared, its volumes counted (countVolume has the
-//      stencil operations), and its light added where the stencil is 0, into a float target
+//      stencil operations), the casters' sides turned from it marked shadowed (markTurnedFromLight:
+//      the rule the count states, made to hold where its sides round), and its light added where
+//      the stencil is 0, into a float target
 //      (gl/accumulation_target.h) so many lights do not band.
 // Scene files may also bring open meshes, whose faces block light from both sides (a volume
 // from each side), and more nested volumes than 8 bits count (buildVolume, countVolumes).
@@ -177,6 +179,8 @@ void FastRobustShadows::render(Frame& f) {
     if (f.on("shadow")) {
       buildVolumes(f, light.position, clip, occlusionPyramid(nearRect, light.position), frustum);
       countVolumes(f, light.position);
+      // The old 24-bit path (pinf-fixed24, or no clip control) keeps the count alone.
+      if (f.on("mark") && f.reversedDepth) markTurnedFromLight(f, light.position);
     }
     if (depthBounds) glDisable(GL_DEPTH_BOUNDS_TEST_EXT);
     endPass(f, "shadows", which, index);
@@ -256,18 +260,18 @@ void FastRobustShadows::buildVolume(Frame& f, std::size_t c, const glm::vec4& wo
       possibleSilhouette(caster, p, light, lit, f.option("silhouettes"));
   VolumeIndices built = volumeOf(p, light, recipe, lit, edges, f.on("split"));
   built.volume.shadowCase = shadowCase;
-  const std::size_t nesting = nestingOf(caster, p, light, lit, edges.size());
+  const std::size_t nesting = nestingOf(caster, p, light, lit, edges);
   std::vector<LightVolume> volumes{{c, 0, built.volume, nesting, false}};
   if (nesting > 127 && p.report.closedManifold()) {
     volumes.clear();
     built.indices.clear();
     built.split.clear();
     const Recipe full{true, light.w == 0.0f ? DarkCapKind::None : DarkCapKind::Piece, true};
-    for (const std::vector<bool>& piece : litFacePieces(lit, 127)) {
-      VolumeIndices v = volumeOf(p, light, full, piece, possibleSilhouetteEdges(p.adjacency, piece), false);
+    for (const LitPiece& piece : litFacePieces(p.mesh, p.adjacency, lit, light, 127)) {
+      VolumeIndices v =
+          volumeOf(p, light, full, piece.lit, possibleSilhouetteEdges(p.adjacency, piece.lit), false);
       v.volume.shadowCase = shadowCase;
-      volumes.push_back({c, built.indices.size(), v.volume,
-                         static_cast<std::size_t>(std::count(piece.begin(), piece.end(), true)), true});
+      volumes.push_back({c, built.indices.size(), v.volume, piece.nesting, true});
       built.indices.insert(built.indices.end(), v.indices.begin(), v.indices.end());
     }
   }
@@ -276,16 +280,19 @@ void FastRobustShadows::buildVolume(Frame& f, std::size_t c, const glm::vec4& wo
   lightVolumes_.insert(lightVolumes_.end(), volumes.begin(), volumes.end());
 }
 
-// The most a caster's volume adds to a pixel's count (geometry/shadow_volume.h's nestingBound).
+// The most a caster's volume adds to a pixel's count (geometry/shadow_volume.h's nestingBound, and
+// for a closed caster projectedNestingBound: its silhouette seen from the light).
 std::size_t FastRobustShadows::nestingOf(const Caster& c, const PreparedCaster& p, const glm::vec4& light,
-                                         const std::vector<bool>& lit, std::size_t edges) {
+                                         const std::vector<bool>& lit, const std::vector<SilhouetteEdge>& edges) {
   if (c.convex) return 1;
   const bool outside =
       light.w == 0.0f || glm::distance(glm::vec3(light) / light.w, c.bounds.centre) > c.bounds.radius;
   // An open caster casts from both sides, and a fold of it changes the count by two.
-  if (!p.report.closedManifold()) return nestingBound(p.mesh.indices.size() / 3, 2 * edges, false, outside);
-  return nestingBound(static_cast<std::size_t>(std::count(lit.begin(), lit.end(), true)), edges, false,
-                      outside);
+  if (!p.report.closedManifold())
+    return nestingBound(p.mesh.indices.size() / 3, 2 * edges.size(), false, outside);
+  const std::size_t bound =
+      nestingBound(static_cast<std::size_t>(std::count(lit.begin(), lit.end(), true)), edges.size(), false, outside);
+  return bound <= 1 ? bound : std::min(bound, projectedNestingBound(p.mesh, lit, edges, light));
 }
 
 // ---- counting the volumes in the stencil ----------------------------------------------------
@@ -333,6 +340,30 @@ void FastRobustShadows::countVolume(const Frame& f, const LightVolume& lv, const
     caster.gpu->draw(lv.first + v.sides + v.darkCap, v.lightCap);
     glDepthFunc(depth_.less);
   }
+}
+
+// A caster's side turned from the light, where the eye sees it, lies in the caster's own shadow:
+// the light reaches it through the caster. Its volume says so with a count of 1 or more, but
+// near the terminator, on faces a few hundredths or less from edge-on, the sides of the possible
+// silhouette run within a few millionths of the eye's distance behind the surface, and the
+// rasterizer's depths can round one in front of it: a pixel counted 0, lit. Bit 7 set where such
+// a face reads 0 (facesTurnedFromLight, decided per face as facesLight decides), at exactly its
+// depths (GL_EQUAL, the ambient pass's program), makes the rule hold whatever the count rounded to.
+void FastRobustShadows::markTurnedFromLight(const Frame& f, const glm::vec4& light) {
+  const bool parallel = f.projection[2][3] == 0.0f;  // clip w does not depend on depth
+  const glm::vec4 eye = parallel ? glm::vec4(glm::vec3(glm::inverse(f.view)[2]), 0.0f) : glm::vec4(f.eye, 1.0f);
+  glEnable(GL_STENCIL_TEST);
+  // Only where the count reads 0: bit 7 set there (INVERT through the mask), every other
+  // count kept as it is.
+  glStencilMask(0x80);
+  glStencilFunc(GL_EQUAL, 0, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_INVERT);
+  glDepthFunc(GL_EQUAL);
+  meshes_.drawTurnedFromLight(scene_, depth_.projection * f.view, light, eye);
+  glDepthFunc(depth_.less);
+  glStencilMask(0xFF);
+  glDisable(GL_STENCIL_TEST);
+  glEnable(GL_CULL_FACE);  // the scene's own culling again
 }
 
 // Where a group's count (bits 0-6) is not 0, the pixel is in a shadow: set bit 7 and clear the

@@ -154,9 +154,10 @@ TEST(Oracle, ACastersSideTurnedFromTheLightIsShadowed) {
                                       std::numeric_limits<float>::infinity(), &surfaces);
   std::size_t face = 0, shadowed = 0;
   for (std::size_t i = 0; i < classes.size(); ++i) {
-    face += surfaces[i] == 0;
+    // The side turned from the light is a surface of its own: object 0 plus the one object.
+    face += surfaces[i] == 1;
     shadowed += classes[i] == PixelClass::Shadowed;
-    EXPECT_EQ(surfaces[i] == 0, classes[i] != PixelClass::Empty) << "pixel " << i;
+    EXPECT_EQ(surfaces[i] == 1, classes[i] != PixelClass::Empty) << "pixel " << i;
   }
   EXPECT_GT(face, 100u);
   EXPECT_EQ(shadowed, face) << "every pixel of the face turned from the light";

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <glm/geometric.hpp>
 #include <map>
 #include <stdexcept>
@@ -411,4 +413,113 @@ TEST(NestedVolumes, BoundsAndPlans) {
   EXPECT_EQ(countPlan({}).groups, 0);
   EXPECT_THROW(litFacePieces({true}, 0), std::invalid_argument);
   EXPECT_TRUE(litFacePieces({false, false}, 3).empty());
+}
+
+TEST(NestedVolumes, SilhouetteSeenFromTheLightBoundsATorus) {
+  // A torus of 86,400 triangles lit from low beside it: the ray from the light through the far
+  // tube's centre passes through the near tube first, so beyond the far tube a point lies inside
+  // two nested volumes. The face count and half the silhouette edges allow hundreds; the
+  // silhouette seen from the light must still allow those two, and no more than one count group's
+  // 127, so that the torus is counted whole.
+  const Mesh torus = weldByPosition(makeTorus(0.8f, 0.3f, 360, 120)).mesh;
+  const EdgeAdjacency adjacency = buildEdgeAdjacency(torus.indices, torus.positions.size());
+  const glm::vec4 light(0.0f, 0.6f, 3.0f, 1.0f);
+  const std::vector<bool> lit = facesLight(torus, light);
+  const std::vector<SilhouetteEdge> edges = possibleSilhouetteEdges(adjacency, lit);
+  std::size_t litCount = 0;
+  for (bool l : lit) litCount += l;
+  EXPECT_GT(nestingBound(litCount, edges.size(), false, true), 127u) << "the old bound splits it";
+  const std::size_t bound = projectedNestingBound(torus, lit, edges, light);
+  EXPECT_LE(bound, 127u);
+  const ClosedVolume whole = closedVolume(torus, adjacency, light, 400.0f);
+  const Mesh volume = asMesh(whole.triangles);
+  // From the light through (0, 0, -0.8), the far tube's centre: y = 0.6 - 0.6 s, z = 3 - 3.8 s.
+  const glm::dvec3 beyond(0.0, 0.6 - 0.6 * 2.0, 3.0 - 3.8 * 2.0);
+  EXPECT_EQ(windingNumber(volume, beyond), 2);
+  EXPECT_GE(bound, 2u);
+  // A directional light: the same bound along its rays, never below the nesting found.
+  const glm::vec4 sun(0.0f, 0.2f, 1.0f, 0.0f);
+  const std::vector<bool> sunLit = facesLight(torus, sun);
+  const std::size_t sunBound = projectedNestingBound(torus, sunLit, possibleSilhouetteEdges(adjacency, sunLit), sun);
+  EXPECT_GE(sunBound, 2u) << "a ray along -sun through both tubes";
+  EXPECT_LE(sunBound, 127u);
+  // A light in the hole's plane, beside the torus on the x axis: lit faces on both sides of it
+  // along any axis, no plane shows them all, no bound.
+  const glm::vec4 among(0.0f, 0.0f, 0.0f, 1.0f);
+  const std::vector<bool> amongLit = facesLight(torus, among);
+  EXPECT_EQ(projectedNestingBound(torus, amongLit, possibleSilhouetteEdges(adjacency, amongLit), among),
+            std::numeric_limits<std::size_t>::max());
+  EXPECT_EQ(projectedNestingBound(torus, std::vector<bool>(lit.size(), false), {}, light), 0u);
+  EXPECT_THROW(projectedNestingBound(torus, {true}, edges, light), std::invalid_argument);
+}
+
+TEST(NestedVolumes, PiecesAreWholeRegionsOfLitFaces) {
+  // The staircase of PiecesCountWhatTheWholeCasterCounts: each tread is a region of lit faces of
+  // its own (its risers face away). Pieces that count at most 5 hold whole treads, so no edge
+  // lies between lit faces of two pieces (where a side would hang from the lit surface), and the
+  // pieces' windings still add up to the whole volume's, each within its piece's bound.
+  const Mesh stairs = weldByPosition(makeStairs(12, 1.0f, 0.2f, 0.2f)).mesh;
+  const EdgeAdjacency adjacency = buildEdgeAdjacency(stairs.indices, stairs.positions.size());
+  const glm::vec4 light(60.0f, 60.15f, 0.1f, 1.0f);
+  const float reach = 400.0f;
+  const std::vector<bool> lit = facesLight(stairs, light);
+  const std::vector<LitPiece> pieces = litFacePieces(stairs, adjacency, lit, light, 5);
+  std::vector<int> pieceOf(lit.size(), -1);
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    EXPECT_GE(pieces[k].nesting, 1u);
+    EXPECT_LE(pieces[k].nesting, 5u);
+    for (std::size_t t = 0; t < lit.size(); ++t)
+      if (pieces[k].lit[t]) {
+        EXPECT_TRUE(lit[t]);
+        EXPECT_EQ(pieceOf[t], -1) << "face " << t << " in two pieces";
+        pieceOf[t] = int(k);
+      }
+  }
+  for (std::size_t t = 0; t < lit.size(); ++t) EXPECT_EQ(pieceOf[t] >= 0, bool(lit[t])) << "face " << t;
+  for (const Edge& e : adjacency.edges)
+    if (e.face1 >= 0 && lit[std::size_t(e.face0)] && lit[std::size_t(e.face1)]) {
+      EXPECT_EQ(pieceOf[std::size_t(e.face0)], pieceOf[std::size_t(e.face1)]) << "an edge between two pieces";
+    }
+  EXPECT_LE(pieces.size(), 4u) << "12 treads of bound 1, 5 to a piece: 3 pieces (a tread may have more faces)";
+  const ClosedVolume whole = closedVolume(stairs, adjacency, light, reach);
+  std::vector<Mesh> volumes;
+  for (const LitPiece& piece : pieces) volumes.push_back(asMesh(closedVolume(stairs, adjacency, light, reach, piece.lit).triangles));
+  int deepest = 0;
+  for (int i = 0; i < 200; ++i) {
+    const double t = -3.0 + 0.0085 * i;
+    const glm::dvec3 p = i % 2 ? glm::dvec3(t, t + 0.15, 0.1)
+                               : glm::dvec3(-2.0 + 0.02 * i, -2.0 + 0.017 * i, -0.4 + 0.004 * i);
+    const int w = windingNumber(asMesh(whole.triangles), p);
+    int sum = 0;
+    for (std::size_t k = 0; k < volumes.size(); ++k) {
+      const int wk = windingNumber(volumes[k], p);
+      EXPECT_LE(wk, int(pieces[k].nesting));
+      sum += wk;
+    }
+    EXPECT_EQ(sum, w) << "at " << p.x << " " << p.y << " " << p.z;
+    deepest = std::max(deepest, w);
+  }
+  EXPECT_EQ(deepest, 12);
+  EXPECT_THROW(litFacePieces(stairs, adjacency, lit, light, 0), std::invalid_argument);
+}
+
+TEST(ShadowVolume, FacesTurnedFromLightAreThoseWhoseSeenSideTheLightMisses) {
+  // A cube of half size 0.5 (12 triangles), the light above it, the eye in front of it. The front
+  // face (+z) faces away from the light and towards the eye. The top face faces the light, but
+  // the eye lies below its plane and sees its other side. The bottom, back and x faces have the
+  // light and the eye on the same side of their planes (behind them).
+  const Mesh cube = weldByPosition(makeCube(0.5f)).mesh;
+  const glm::vec4 light(0.0f, 5.0f, 0.0f, 1.0f), eye(0.0f, 0.0f, 5.0f, 1.0f);
+  const std::vector<std::uint32_t> turned = facesTurnedFromLight(cube, light, eye);
+  ASSERT_EQ(turned.size(), 12u) << "two faces of two triangles";
+  for (std::size_t t = 0; t < turned.size() / 3; ++t) {
+    const glm::vec3 a = cube.positions[turned[3 * t]], b = cube.positions[turned[3 * t + 1]],
+                    c = cube.positions[turned[3 * t + 2]];
+    const glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
+    EXPECT_TRUE(n == glm::vec3(0, 0, 1) || n == glm::vec3(0, 1, 0)) << n.x << " " << n.y << " " << n.z;
+  }
+  // A parallel view looking down: the top and the bottom have the eye on the light's side, the
+  // other faces are edge-on to the eye.
+  const std::vector<std::uint32_t> fromAbove = facesTurnedFromLight(cube, light, glm::vec4(0, 1, 0, 0));
+  EXPECT_TRUE(fromAbove.empty()) << "the eye on the light's side of every face's plane";
 }
