@@ -66,10 +66,11 @@ void SceneMeshes::draw(const Scene& scene, const glm::mat4& viewProjection, cons
   glEnable(GL_CULL_FACE);
 }
 
-void SceneMeshes::drawTurnedFromLight(const Scene& scene, const glm::mat4& viewProjection, const glm::vec4& light,
+std::size_t SceneMeshes::drawTurnedFromLight(const Scene& scene, const glm::mat4& viewProjection, const glm::vec4& light,
                                       const glm::vec4& eye) {
   setLightShading(light_, {.viewProjection = viewProjection});  // the positions draw() gave
   glDisable(GL_CULL_FACE);
+  std::size_t triangles = 0;
   for (std::size_t i = 0; i < meshes_.size(); ++i) {
     const SceneObject& o = scene.objects[i];
     if (!o.casts) continue;
@@ -78,7 +79,9 @@ void SceneMeshes::drawTurnedFromLight(const Scene& scene, const glm::mat4& viewP
     if (turned.indices.empty()) continue;
     light_.set("model", models_[i]);
     GpuMesh(turned).draw();
+    triangles += turned.triangleCount();
   }
+  return triangles;
 }
 
 }  // namespace stencil

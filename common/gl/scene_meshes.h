@@ -42,8 +42,9 @@ class SceneMeshes {
   // homogeneous): geometry/shadow_volume.h's facesTurnedFromLight, drawn with the light program
   // through viewProjection, so that their fragments have exactly the depths draw() gave them.
   // eye: world, homogeneous (w = 0: the direction towards a parallel view's eye). The caller
-  // sets the stencil and depth state; no culling. Uploads the faces anew on each call.
-  void drawTurnedFromLight(const Scene& scene, const glm::mat4& viewProjection, const glm::vec4& light,
+  // sets the stencil and depth state; no culling. Uploads the faces anew on each call. Returns
+  // the triangles drawn.
+  std::size_t drawTurnedFromLight(const Scene& scene, const glm::mat4& viewProjection, const glm::vec4& light,
                            const glm::vec4& eye);
   // Object i's triangles alone, with the program and state bound now.
   void drawObject(std::size_t i) const { meshes_[i]->draw(); }

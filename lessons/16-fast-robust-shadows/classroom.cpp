@@ -299,7 +299,7 @@ void FastRobustShadows::startCounts(Frame& f) {
        {"lights_drawn", "lights_offscreen", "casters_culled", "casters_case1", "casters_case2",
         "casters_case3", "casters_zfail", "side_triangles", "dark_cap_triangles", "light_cap_triangles",
         "split_fan_triangles", "fan_spheres", "depth_bounds_used", "depth_bounds_skipped",
-        "objects_cut_by_near_plane", "rooms", "lights_buried"})
+        "objects_cut_by_near_plane", "rooms", "lights_buried", "mark_triangles"})
     f.count(name, 0);
 }
 

@@ -359,7 +359,7 @@ void FastRobustShadows::markTurnedFromLight(const Frame& f, const glm::vec4& lig
   glStencilFunc(GL_EQUAL, 0, 0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_INVERT);
   glDepthFunc(GL_EQUAL);
-  meshes_.drawTurnedFromLight(scene_, depth_.projection * f.view, light, eye);
+  f.count("mark_triangles", meshes_.drawTurnedFromLight(scene_, depth_.projection * f.view, light, eye));
   glDepthFunc(depth_.less);
   glStencilMask(0xFF);
   glDisable(GL_STENCIL_TEST);
