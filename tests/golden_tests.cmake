@@ -27,6 +27,7 @@ function(add_golden_tests id)
       -D GOLDEN_DIR=${GOLDEN_ROOT}/${id} -D ARTIFACTS=${CMAKE_BINARY_DIR}/golden-artifacts/${id}
       -D "BACKENDS=${backends}" -D SIZE=${GOLDEN_SIZE} -D TIME=${GOLDEN_TIME} -D XVFB_RUN=${XVFB_RUN}
       -D MESA_EGL_VENDOR=${STENCIL_MESA_EGL_VENDOR}
+      -D TIMEOUT_SCALE=${STENCIL_TIMEOUT_SCALE}
       -P ${PROJECT_SOURCE_DIR}/tests/discover_golden_tests.cmake
     BYPRODUCTS ${discovered}
     VERBATIM)

@@ -72,16 +72,21 @@ OrbitCamera orbitCameraOf(const SceneCamera&);
 // The orbit camera whose eye stands at `eye` looking at `target` (world space, +y up): distance
 // |eye - target|, azimuthDeg atan2(x, z) and elevationDeg asin(y / distance) of eye - target, the
 // inverse of OrbitCamera::eye(). Field of view, planes and the rest keep OrbitCamera's defaults.
-// The caller keeps eye off the target and off the vertical through it (no azimuth there). Inline:
-// for a lesson's constant eye and target the compiler evaluates it correctly rounded, where the C
-// library's asin and atan2 may differ by an ulp, and an ulp in the camera moves pixels.
+// The caller keeps eye off the target and off the vertical through it (no azimuth there). The
+// angles are taken in double and rounded to float, so that they are the same at every optimisation
+// level: glibc's float asinf and atan2f are not correctly rounded (atan2f is 2 ulps off for lesson
+// 13's fill camera) while a compiler folds a call on constants correctly rounded, and an ulp in the
+// camera moves pixels. The double functions are within an ulp of a double, which rounds to the
+// correctly rounded float, folded or called.
 inline OrbitCamera orbitCameraFrom(glm::vec3 eye, glm::vec3 target) {
   const glm::vec3 back = eye - target;
   OrbitCamera c;
   c.target = target;
   c.distance = glm::length(back);
-  c.elevationDeg = glm::degrees(std::asin(back.y / c.distance));
-  c.azimuthDeg = glm::degrees(std::atan2(back.x, back.z));  // eye() puts the eye at (sin az, ., cos az)
+  const double elevation = std::asin(static_cast<double>(back.y / c.distance));
+  const double azimuth = std::atan2(static_cast<double>(back.x), static_cast<double>(back.z));
+  c.elevationDeg = glm::degrees(static_cast<float>(elevation));
+  c.azimuthDeg = glm::degrees(static_cast<float>(azimuth));  // eye() puts the eye at (sin az, ., cos az)
   return c;
 }
 

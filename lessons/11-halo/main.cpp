@@ -389,7 +389,7 @@ class Halo final : public Lesson {
   }
   // 127 per blend, saturating at 255: 0, 1, 2 (254), and 3 for three or more (255).
   static std::uint8_t blendCount(std::uint8_t v) {
-    return v == 255 ? 3 : static_cast<std::uint8_t>((v + 63) / 127);
+    return static_cast<std::uint8_t>(v == 255 ? 3 : (v + 63) / 127);
   }
 
   // ---- the scene -------------------------------------------------------------------------------------
