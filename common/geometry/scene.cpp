@@ -395,6 +395,14 @@ std::string readObjFile(const std::filesystem::path& path) {
 
 namespace {
 
+// A number as the file may have written it: the shortest text that reads back as this float
+// (1e-40, where six digits would say 9.99995e-41; 1000000.5, where they would say 1e+06).
+std::string shortestText(float v) {
+  char text[32];
+  const auto [end, ec] = std::to_chars(text, text + sizeof text, v);
+  return ec == std::errc() ? std::string(text, end) : std::to_string(v);
+}
+
 // One line of a scene file as words, read left to right; every complaint names FILE:LINE.
 class LineReader {
  public:
@@ -413,6 +421,9 @@ class LineReader {
     const std::string w = word(what);
     float value = 0.0f;
     const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), value);
+    if (ec == std::errc::result_out_of_range && end == w.data() + w.size())
+      fail("expected " + what + " (a number a float holds: 0, or from about 1.4e-45 to 3.4e+38 in size), got " +
+           quote(w));
     if (ec != std::errc() || end != w.data() + w.size() || !std::isfinite(value))
       fail("expected " + what + " (a finite number), got " + quote(w));
     return value;
@@ -532,16 +543,8 @@ class ShapeParams {
   float sized(const std::string& key, float v) const {
     if (v < kMinSceneScale || v > kMaxSceneCoordinate)
       line_.fail("expected " + key + " from " + LineReader::format(kMinSceneScale) + " to " +
-                 LineReader::format(kMaxSceneCoordinate) + " scene units, got " + shortest(v));
+                 LineReader::format(kMaxSceneCoordinate) + " scene units, got " + shortestText(v));
     return v;
-  }
-
-  // The number as the file may have written it: the shortest text that reads back as this float
-  // (1e-40, where six digits would say 9.99995e-41).
-  static std::string shortest(float v) {
-    char text[32];
-    const auto [end, ec] = std::to_chars(text, text + sizeof text, v);
-    return ec == std::errc() ? std::string(text, end) : LineReader::format(v);
   }
 
   LineReader& line_;
@@ -796,7 +799,7 @@ void checkPlacement(const LineReader& line, const SceneObject& o) {
   const glm::dvec3 far = glm::max(glm::abs(low - bob), glm::abs(high + bob));
   const double reach = std::max({far.x, far.y, far.z});
   if (!(reach <= kMaxSceneCoordinate))
-    line.fail("the object reaches " + fmt(reach) + " from the origin" +
+    line.fail("the object reaches " + shortestText(static_cast<float>(reach)) + " from the origin" +
               (o.spinDegPerSecond != 0.0f || o.bob != 0.0f ? " as it moves" : "") + "; a scene lies within " +
               fmt(kMaxSceneCoordinate) + " of the origin on each axis");
 }

@@ -104,17 +104,25 @@ struct Writing {
 };
 
 // Makes the folders missing above and at `dir`, outermost first, recording each one made.
+// A folder written with "." or ".." (nd/./, nd/x/..) is made as it reads once those are resolved
+// in the name: nothing that does not exist yet can be a link for ".." to go back through.
 void makeFolders(const fs::path& dir, const fs::path& forFile, std::vector<fs::path>& made) {
-  if (dir.empty()) return;
+  fs::path normal = dir.lexically_normal();
+  if (!normal.empty() && !normal.has_filename()) normal = normal.parent_path();  // "nd/" is "nd"
+  if (normal.empty() || normal == ".") return;
   std::vector<fs::path> missing;
-  for (fs::path d = dir; !d.empty(); d = d.parent_path()) {
+  for (fs::path d = normal; !d.empty(); d = d.parent_path()) {
     std::error_code ec;
     if (fs::exists(fs::symlink_status(d, ec)) || d == d.root_path()) break;
     missing.push_back(d);
     if (d.parent_path() == d) break;
   }
   for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
-    if (mkdir(it->c_str(), 0777) != 0) cannotWrite(forFile, it->string() + ": " + std::strerror(errno));
+    if (mkdir(it->c_str(), 0777) != 0) {
+      std::error_code ec;
+      if (errno == EEXIST && fs::is_directory(*it, ec)) continue;  // made meanwhile, or ".." of one made
+      cannotWrite(forFile, it->string() + ": " + std::strerror(errno));
+    }
     made.push_back(*it);
   }
 }

@@ -63,7 +63,7 @@ class FastRobustShadows final : public Lesson {
                                const std::vector<bool>& lit, const std::vector<SilhouetteEdge>& edges);
   void countVolumes(Frame& f, const glm::vec4& light);
   void countVolume(const Frame& f, const LightVolume& lv, const glm::vec4& worldLight);
-  void markTurnedFromLight(const Frame& f, const glm::vec4& light);
+  void markTurnedFromLight(Frame& f, const glm::vec4& light);
   void foldCount();
   void setExtrusion(const Frame& f, const Caster& c, const glm::vec4& worldLight);
   void endPass(Frame& f, const char* name, const std::string& detail = {}, int mask = -1);

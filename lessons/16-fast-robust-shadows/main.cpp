@@ -349,7 +349,7 @@ void FastRobustShadows::countVolume(const Frame& f, const LightVolume& lv, const
 // rasterizer's depths can round one in front of it: a pixel counted 0, lit. Bit 7 set where such
 // a face reads 0 (facesTurnedFromLight, decided per face as facesLight decides), at exactly its
 // depths (GL_EQUAL, the ambient pass's program), makes the rule hold whatever the count rounded to.
-void FastRobustShadows::markTurnedFromLight(const Frame& f, const glm::vec4& light) {
+void FastRobustShadows::markTurnedFromLight(Frame& f, const glm::vec4& light) {
   const bool parallel = f.projection[2][3] == 0.0f;  // clip w does not depend on depth
   const glm::vec4 eye = parallel ? glm::vec4(glm::vec3(glm::inverse(f.view)[2]), 0.0f) : glm::vec4(f.eye, 1.0f);
   glEnable(GL_STENCIL_TEST);

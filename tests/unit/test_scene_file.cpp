@@ -367,16 +367,19 @@ TEST(SceneFile, WhatTheTransformsMakeIsCheckedAtTheLineThatMakesIt) {
       {h + "  translate 3e38 0 0\n  translate 3e38 0 0\n",
        "test.scene:4: the object reaches 3e+38 from the origin; a scene lies within 1e+06 of the origin on each axis"},
       {h + "  translate 0 6e5 0\n  translate 0 6e5 0\n",
-       "test.scene:5: the object reaches 1.2e+06 from the origin; a scene lies within 1e+06 of the origin on each "
+       "test.scene:5: the object reaches 1200001 from the origin; a scene lies within 1e+06 of the origin on each "
        "axis"},
       // A box's corners lie sqrt(3) half sizes from its origin: spinning, it reaches that far.
       {std::string(header) + "object a box half 1\n  scale 2000\n  translate 997000 0 0\n  spin 10\n",
-       "test.scene:6: the object reaches 1.00046e+06 from the origin as it moves; a scene lies within 1e+06 of "
+       "test.scene:6: the object reaches 1000464.1 from the origin as it moves; a scene lies within 1e+06 of "
        "the origin on each axis"},
-      {h + "  bob 2e6\n", "test.scene:4: the object reaches 2e+06 from the origin as it moves; a scene lies "
+      {h + "  bob 2e6\n", "test.scene:4: the object reaches 2000001 from the origin as it moves; a scene lies "
                            "within 1e+06 of the origin on each axis"},
       {h + "  spin 1e38\n",
        "test.scene:4: a spin of 1e+38 degrees per second turns past what a float holds by 1e+06 s"},
+      {std::string(header) + "light directional 1e-46 0 0\n",
+       "test.scene:3: expected the direction towards the light x (a number a float holds: 0, or from about "
+       "1.4e-45 to 3.4e+38 in size), got '1e-46'"},
       {std::string(header) + "object a box half 1 1 1e-40\n",
        "test.scene:3: expected half from 1e-06 to 1e+06 scene units, got 1e-40"},
       {std::string(header) + "object a box half 1e13\n",
