@@ -103,15 +103,22 @@ struct Writing {
   bool renamed = false;
 };
 
+// Where a file goes: as named when its folder exists (the system resolves "." and ".." there);
+// else its folder written with "." or ".." (nd/./, nd/x/..) as it reads once those are resolved
+// in the name, since nothing that does not exist yet can be a link for ".." to go back through.
+fs::path whereItGoes(const fs::path& file) {
+  std::error_code ec;
+  if (!file.has_parent_path() || fs::is_directory(file.parent_path(), ec)) return file;
+  fs::path folder = file.parent_path().lexically_normal();
+  if (!folder.empty() && !folder.has_filename()) folder = folder.parent_path();  // "nd/" is "nd"
+  return folder / file.filename();
+}
+
 // Makes the folders missing above and at `dir`, outermost first, recording each one made.
-// A folder written with "." or ".." (nd/./, nd/x/..) is made as it reads once those are resolved
-// in the name: nothing that does not exist yet can be a link for ".." to go back through.
 void makeFolders(const fs::path& dir, const fs::path& forFile, std::vector<fs::path>& made) {
-  fs::path normal = dir.lexically_normal();
-  if (!normal.empty() && !normal.has_filename()) normal = normal.parent_path();  // "nd/" is "nd"
-  if (normal.empty() || normal == ".") return;
+  if (dir.empty() || dir == ".") return;
   std::vector<fs::path> missing;
-  for (fs::path d = normal; !d.empty(); d = d.parent_path()) {
+  for (fs::path d = dir; !d.empty(); d = d.parent_path()) {
     std::error_code ec;
     if (fs::exists(fs::symlink_status(d, ec)) || d == d.root_path()) break;
     missing.push_back(d);
@@ -254,10 +261,11 @@ void OutputSet::commit() {
     makeRoomForFiles(files.size());
     for (const Staged& f : files) {
       if (f.path.empty()) throw OutputError("could not write a file with an empty name");
-      makeFolders(f.path.parent_path(), f.path, folders);
+      const fs::path target = whereItGoes(f.path);
+      makeFolders(target.parent_path(), f.path, folders);
       Writing& w = writing.emplace_back();
-      w.target = f.path;
-      w.fd = openUnnamed(f.path.parent_path(), w.linked);
+      w.target = target;
+      w.fd = openUnnamed(target.parent_path(), w.linked);
       if (w.fd < 0 || !writeAll(w.fd, f.bytes)) cannotWrite(f.path, std::strerror(errno));
     }
     const SignalsHeld held;

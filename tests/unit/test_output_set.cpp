@@ -88,3 +88,15 @@ TEST(OutputSet, ANameBeyondTheSystemsLimitIsRefusedUpFront) {
   writeFile(dir / (std::string(251, 'n') + ".png"), "fits");  // the temporary name is not longer
   EXPECT_EQ(entries(dir), 1u);
 }
+
+TEST(OutputSet, FoldersWrittenWithDotsAreMadeAsTheyRead) {
+  const fs::path dir = freshDir("dots");
+  OutputSet set;
+  set.add(dir / "nd/./a.txt", "a");
+  set.add(dir / "nd/x/../b.txt", "b");
+  set.commit();
+  EXPECT_EQ(contents(dir / "nd/a.txt"), "a");
+  EXPECT_EQ(contents(dir / "nd/b.txt"), "b");
+  EXPECT_FALSE(fs::exists(dir / "nd/x")) << "x is only a step of the name";
+  EXPECT_EQ(entries(dir), 3u);  // nd, nd/a.txt, nd/b.txt
+}
