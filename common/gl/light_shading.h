@@ -7,24 +7,14 @@
 #include <glm/glm.hpp>
 #include <limits>
 
+#include "geometry/projection.h"
 #include "gl/shader.h"
 
 namespace stencil {
 
-// Far from the world's origin a float's step is coarse (1/128 at 1e5 units), and the vertex
-// shader's viewProjection * world, a sum of terms that large, loses the position to cancellation:
-// a box 1e5 units out seen from 5 units away moved by most of a pixel at 1024x768. Shaders with an
-// "origin" uniform (common/light.vert, common/extrude.vert, 15-robust-zfail/volume.vert) subtract
-// it from the world position, a difference float rounds at its own small size, and draw with
-// viewProjectionFrom(viewProjection, origin). drawingOrigin is the eye (world) rounded to a
-// multiple of 1024 world units, so within 512 units of the world's origin it is 0 and every such
-// scene draws bit for bit as without it.
-glm::vec3 drawingOrigin(const glm::vec3& eye);
-
-// viewProjection * translate(origin), taken in double and rounded once: (world - origin) to clip.
-// For origin 0 it is viewProjection itself.
-glm::mat4 viewProjectionFrom(const glm::mat4& viewProjection, const glm::vec3& origin);
-
+// Shaders with an "origin" uniform (common/light.vert, common/extrude.vert,
+// 15-robust-zfail/volume.vert) subtract it from the world position and draw with
+// viewProjectionFrom(viewProjection, origin); drawingOrigin (geometry/projection.h) says why.
 struct LightShading {
   glm::mat4 viewProjection{1.0f};  // world to clip, the matrix the frame draws with
   glm::vec3 origin{0.0f};          // world, drawingOrigin: the shader draws from there
