@@ -10,4 +10,12 @@ glm::mat4 reversedDepth(const glm::mat4& projection) {
   return r;
 }
 
+glm::vec3 drawingOrigin(const glm::vec3& eye) { return glm::round(eye / 1024.0f) * 1024.0f; }
+
+glm::mat4 viewProjectionFrom(const glm::mat4& viewProjection, const glm::vec3& origin) {
+  glm::dmat4 translate(1.0);
+  translate[3] = glm::dvec4(glm::dvec3(origin), 1.0);
+  return glm::mat4(glm::dmat4(viewProjection) * translate);
+}
+
 }  // namespace stencil

@@ -20,4 +20,17 @@ namespace stencil {
 // perspective (finite or infinite) or parallel.
 glm::mat4 reversedDepth(const glm::mat4& projection);
 
+// Far from the world's origin a float's step is coarse (1/128 at 1e5 units), and
+// viewProjection * world, a sum of terms that large, loses a position to cancellation: a box 1e5
+// units out seen from 5 units away moved by most of a pixel at 1024x768. Drawing (and ray casting)
+// from an origin near the eye keeps every coordinate at the size of its distance from the eye,
+// which is what a pixel's footprint scales with. drawingOrigin is the eye (world) rounded to a
+// multiple of 1024 world units: exact in float, and 0 within 512 units of the world's origin, so
+// every such scene is drawn and cast bit for bit as from the world's origin.
+glm::vec3 drawingOrigin(const glm::vec3& eye);
+
+// viewProjection * translate(origin), taken in double and rounded once: (world - origin) to clip.
+// For origin 0 it is viewProjection itself.
+glm::mat4 viewProjectionFrom(const glm::mat4& viewProjection, const glm::vec3& origin);
+
 }  // namespace stencil

@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "geometry/projection.h"
 #include "geometry/raycast.h"
 
 namespace stencil {
@@ -46,9 +47,27 @@ void checkSizes(const std::vector<PixelClass>& oracle, const std::vector<bool>& 
 
 }  // namespace
 
-std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objects, const glm::vec4& light,
-                                       const glm::mat4& viewProjection, glm::ivec2 size, float lightRadius,
-                                       std::vector<int>* surfaces) {
+std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objectsInWorld,
+                                       const glm::vec4& worldLight, const glm::mat4& viewProjection,
+                                       glm::ivec2 size, float lightRadius, std::vector<int>* surfaces) {
+  // What a pixel sees and whether it is lit do not change when the objects, the camera and the
+  // light move together. Cast from drawingOrigin near the eye (the centre of the near plane), so
+  // that a ray's start and every hit carry rounding of their distance from the eye, as the pixel's
+  // footprint does, not of their distance from the world's origin: 1e5 units out, rays that
+  // started on the near plane rounded to float moved by 0.8 of a pixel at 1024x768.
+  const glm::dvec4 nearCentre = glm::inverse(glm::dmat4(viewProjection)) * glm::dvec4(0.0, 0.0, -1.0, 1.0);
+  const glm::vec3 origin = drawingOrigin(glm::vec3(glm::dvec3(nearCentre) / nearCentre.w));
+  std::vector<OracleObject> objects = objectsInWorld;
+  glm::vec4 light = worldLight;
+  if (origin != glm::vec3(0.0f)) {  // else as given, bit for bit
+    glm::dmat4 back(1.0);
+    back[3] = glm::dvec4(-glm::dvec3(origin), 1.0);
+    for (OracleObject& o : objects) {
+      o.model = glm::mat4(back * glm::dmat4(o.model));
+      if (o.sphere) o.sphere = glm::vec4(glm::vec3(*o.sphere) - origin, o.sphere->w);
+    }
+    if (light.w != 0.0f) light = glm::vec4(glm::vec3(light) / light.w - origin, 1.0f);
+  }
   RayScene scene;
   std::vector<std::size_t> objectOf;  // scene object -> index into objects
   for (std::size_t i = 0; i < objects.size(); ++i) {
@@ -81,7 +100,9 @@ std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objects,
         return true;
     return false;
   };
-  const glm::dmat4 inverse = glm::inverse(glm::dmat4(viewProjection));
+  glm::dmat4 from(1.0);
+  from[3] = glm::dvec4(glm::dvec3(origin), 1.0);
+  const glm::dmat4 inverse = glm::inverse(glm::dmat4(viewProjection) * from);  // clip to (world - origin)
 
   std::vector<PixelClass> classes(static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y));
   if (surfaces) surfaces->assign(classes.size(), -1);

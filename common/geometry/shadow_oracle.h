@@ -39,7 +39,9 @@ struct OracleObject {
 // blocks the way to the light, and on a caster's own side turned from the light (the side the
 // camera sees), which lies in the caster's shadow volume; a receiver that casts nothing and
 // faces away from the light is still Lit unless a caster is in the way.
-// lightRadius bounds a point light (geometry/scene.h, SceneLight::radius).
+// lightRadius bounds a point light (geometry/scene.h, SceneLight::radius). The rays are cast in
+// a frame moved to drawingOrigin (geometry/projection.h) near the eye, all of it moved alike, so
+// rounding grows with distance from the eye rather than from the world's origin.
 // When surfaces is given, it receives per pixel the index into the objects of what the camera
 // ray meets, -1 for nothing, and, where the side of a caster the ray meets is turned from the
 // light, that index plus the number of objects: where it changes, the pixel lies on a

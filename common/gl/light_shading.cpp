@@ -5,7 +5,8 @@
 namespace stencil {
 
 void setLightShading(const Program& program, const LightShading& shading) {
-  program.set("viewProjection", shading.viewProjection);
+  program.set("viewProjection", viewProjectionFrom(shading.viewProjection, shading.origin));
+  program.set("origin", shading.origin);
   program.set("ambient", shading.ambient);
   program.set("light", shading.light);
   program.set("lightColour", shading.lightColour);

@@ -7,12 +7,17 @@
 #include <glm/glm.hpp>
 #include <limits>
 
+#include "geometry/projection.h"
 #include "gl/shader.h"
 
 namespace stencil {
 
+// Shaders with an "origin" uniform (common/light.vert, common/extrude.vert,
+// 15-robust-zfail/volume.vert) subtract it from the world position and draw with
+// viewProjectionFrom(viewProjection, origin); drawingOrigin (geometry/projection.h) says why.
 struct LightShading {
   glm::mat4 viewProjection{1.0f};  // world to clip, the matrix the frame draws with
+  glm::vec3 origin{0.0f};          // world, drawingOrigin: the shader draws from there
   glm::vec3 eye{0.0f};             // world, for the highlight
   // World, homogeneous: w = 1 a point, w = 0 the direction towards the light.
   glm::vec4 light{0.0f, 1.0f, 0.0f, 0.0f};

@@ -40,7 +40,9 @@ void SceneMeshes::draw(const Scene& scene, const glm::mat4& viewProjection, cons
                        const glm::vec4& light, const glm::vec3& colour, float radius,
                        const glm::vec3& ambient) {
   // The light's bounds (docs/scenes.md); a wall seen from inside a room is lit on the side the eye sees.
+  origin_ = drawingOrigin(eye);
   setLightShading(light_, {.viewProjection = viewProjection,
+                           .origin = origin_,
                            .eye = eye,
                            .light = light,
                            .lightColour = colour,
@@ -68,7 +70,7 @@ void SceneMeshes::draw(const Scene& scene, const glm::mat4& viewProjection, cons
 
 std::size_t SceneMeshes::drawTurnedFromLight(const Scene& scene, const glm::mat4& viewProjection, const glm::vec4& light,
                                       const glm::vec4& eye) {
-  setLightShading(light_, {.viewProjection = viewProjection});  // the positions draw() gave
+  setLightShading(light_, {.viewProjection = viewProjection, .origin = origin_});  // the positions draw() gave
   glDisable(GL_CULL_FACE);
   std::size_t triangles = 0;
   for (std::size_t i = 0; i < meshes_.size(); ++i) {

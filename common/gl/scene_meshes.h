@@ -55,6 +55,7 @@ class SceneMeshes {
   std::vector<bool> closed_;            // per object: a closed mesh
   std::vector<BoundingSphere> bounds_;  // per object, object space
   std::vector<glm::mat4> models_;       // per object, this frame
+  glm::vec3 origin_{0.0f};              // draw()'s drawingOrigin, for drawTurnedFromLight
   std::vector<bool> cutByNearPlane_;    // per object, this frame
 };
 

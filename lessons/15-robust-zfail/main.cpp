@@ -293,7 +293,8 @@ class RobustZFail final : public Lesson {
   // One light's volumes; with a plan, only the pieces of group `group`.
   void drawVolumes(const Frame& f, std::size_t lightIndex, glm::vec4 colour, const CountPlan* plan = nullptr,
                    int group = 0) {
-    volume_.set("viewProjection", depth_.projection * f.view);
+    volume_.set("viewProjection", viewProjectionFrom(depth_.projection * f.view, drawingOrigin(f.eye)));
+    volume_.set("origin", drawingOrigin(f.eye));
     volume_.set("colour", colour);
     const std::vector<VolumePiece>& pieces = pieces_[lightIndex];
     for (std::size_t k = 0; k < pieces.size(); ++k) {
@@ -328,7 +329,8 @@ class RobustZFail final : public Lesson {
     glStencilFunc(GL_EQUAL, 0, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_INVERT);
     glDepthFunc(GL_EQUAL);
-    setLightShading(light_, {.viewProjection = depth_.projection * f.view});  // the ambient pass's positions
+    setLightShading(light_, {.viewProjection = depth_.projection * f.view,
+                             .origin = drawingOrigin(f.eye)});  // the ambient pass's positions
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
       const SceneObject& o = scene_.objects[i];
       if (!o.casts || solids_.room[i]) continue;  // a room shadows nothing inside itself
@@ -352,6 +354,7 @@ class RobustZFail final : public Lesson {
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);  // 0x80: shadowed, count 0
     glDisable(GL_DEPTH_TEST);
     volume_.set("viewProjection", glm::mat4(1.0f));
+    volume_.set("origin", glm::vec3(0.0f));
     volume_.set("model", glm::mat4(1.0f));
     glFrontFace(GL_CCW);
     window_.draw();
@@ -406,6 +409,7 @@ class RobustZFail final : public Lesson {
                  glm::vec3 lightColour, float radius) {
     // The light's bounds (docs/scenes.md); a wall seen from inside a room is lit on the side the eye sees.
     setLightShading(light_, {.viewProjection = depth_.projection * f.view,
+                             .origin = drawingOrigin(f.eye),
                              .eye = f.eye,
                              .light = light,
                              .lightColour = lightColour,

@@ -44,6 +44,7 @@
 
 #include "fast_robust_shadows.h"
 #include "gl/errors.h"
+#include "gl/light_shading.h"
 
 namespace stencil::fast_robust_shadows {
 
@@ -382,7 +383,8 @@ void FastRobustShadows::foldCount() {
 // extrude.vert's uniforms for one caster: its model matrix and the light in its space.
 void FastRobustShadows::setExtrusion(const Frame& f, const Caster& c, const glm::vec4& worldLight) {
   const glm::mat4& model = meshes_.models()[c.object];
-  extrude_.set("viewProjection", depth_.projection * f.view);
+  extrude_.set("viewProjection", viewProjectionFrom(depth_.projection * f.view, drawingOrigin(f.eye)));
+  extrude_.set("origin", drawingOrigin(f.eye));  // as meshes_.draw's
   extrude_.set("model", model);
   extrude_.set("light", glm::inverse(model) * worldLight);
 }

@@ -5,10 +5,11 @@
 layout(location = 0) in vec4 position;
 
 uniform mat4 model;
-uniform mat4 viewProjection;
+uniform mat4 viewProjection;  // (world - origin) to clip
+uniform vec3 origin;  // world, as common/light.vert's
 invariant gl_Position;
 
 void main() {
   vec4 world = model * position;
-  gl_Position = viewProjection * world;
+  gl_Position = viewProjection * vec4(world.xyz - origin * world.w, world.w);
 }

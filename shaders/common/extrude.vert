@@ -8,12 +8,13 @@
 layout(location = 0) in vec4 position;
 
 uniform mat4 model;
-uniform mat4 viewProjection;
+uniform mat4 viewProjection;  // (world - origin) to clip
+uniform vec3 origin;  // world, as common/light.vert's
 uniform vec4 light;  // in the caster's own space; w = 1 a point, w = 0 a direction
 invariant gl_Position;
 
 void main() {
   vec4 p = position.w != 0.0 ? vec4(position.xyz, 1.0) : vec4(light.w * position.xyz - light.xyz, 0.0);
   vec4 world = model * p;
-  gl_Position = viewProjection * world;
+  gl_Position = viewProjection * vec4(world.xyz - origin * world.w, world.w);
 }

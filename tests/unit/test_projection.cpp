@@ -78,3 +78,28 @@ TEST(ReversedDepth, FinitePerspectiveAndParallelMapNearToOneFarToZero) {
     }
   }
 }
+
+// Near the world's origin the drawing origin is 0 and the matrix is the frame's own, bit for bit,
+// so scenes there draw and ray cast exactly as from the world's origin.
+TEST(DrawingOrigin, IsZeroNearTheWorldsOriginAndLeavesTheMatrixAsItIs) {
+  const glm::mat4 vp = glm::infinitePerspective(glm::radians(55.0f), 4.0f / 3.0f, 0.1f) *
+                       glm::lookAt(glm::vec3(3, 2, 4), glm::vec3(0, 0.5f, 0), glm::vec3(0, 1, 0));
+  EXPECT_EQ(drawingOrigin(glm::vec3(3, 2, 4)), glm::vec3(0.0f));
+  EXPECT_EQ(drawingOrigin(glm::vec3(-511, 300, 511)), glm::vec3(0.0f));
+  EXPECT_EQ(viewProjectionFrom(vp, glm::vec3(0.0f)), vp);
+  EXPECT_EQ(drawingOrigin(glm::vec3(100003, 3, 100004)), glm::vec3(100352, 0, 100352));
+}
+
+// caster-far-from-origin's box edge, 1e5 units out and 4.4 units from the eye, at 1024x768: from
+// the drawing origin, float arithmetic puts it where the frame's matrix, taken exactly, does.
+TEST(DrawingOrigin, KeepsAPointFarFromTheWorldsOriginOnItsPixel) {
+  const glm::vec3 eye(100003, 3, 100004), target(100000, 0.5f, 100000), corner(100000.5f, 1, 100000.5f);
+  const glm::mat4 vp = glm::infinitePerspective(glm::radians(55.0f), 1024.0f / 768.0f, 0.1f) *
+                       glm::lookAt(eye, target, glm::vec3(0, 1, 0));
+  const glm::dvec4 exact = glm::dmat4(vp) * glm::dvec4(glm::dvec3(corner), 1.0);
+  const glm::vec3 origin = drawingOrigin(eye);
+  const glm::vec4 drawn = viewProjectionFrom(vp, origin) * glm::vec4(corner - origin, 1.0f);
+  const double pixel = 2.0 / 1024.0;  // one pixel in normalised device x
+  EXPECT_NEAR(drawn.x / drawn.w, exact.x / exact.w, 0.01 * pixel);
+  EXPECT_NEAR(drawn.y / drawn.w, exact.y / exact.w, 0.01 * pixel);
+}
