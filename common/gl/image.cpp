@@ -14,6 +14,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <utility>
@@ -257,6 +258,7 @@ void OutputSet::commit() {
     }
     for (auto it = folders.rbegin(); it != folders.rend(); ++it) rmdir(it->c_str());
   };
+  std::optional<SignalsHeld> held;  // from the first name given until the undo, if any, is done
   try {
     makeRoomForFiles(files.size());
     for (const Staged& f : files) {
@@ -268,7 +270,7 @@ void OutputSet::commit() {
       w.fd = openUnnamed(target.parent_path(), w.linked);
       if (w.fd < 0 || !writeAll(w.fd, f.bytes)) cannotWrite(f.path, std::strerror(errno));
     }
-    const SignalsHeld held;
+    held.emplace();
     for (Writing& w : writing)
       if (w.linked.empty() && !giveName(w)) cannotWrite(w.target, std::strerror(errno));
     for (Writing& w : writing) {
