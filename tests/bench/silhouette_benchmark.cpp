@@ -762,9 +762,10 @@ int main(int argc, char** argv) {
         const std::string where =
             k < std::size(lightCases) ? lightCases[k].name : motions[k - std::size(lightCases)].name;
         const std::string s = shape;
-        for (const auto& [prefix, method] : {std::pair{"prepared-", Method::Brute},
-                                             std::pair{"dual-", Method::Hextree}, std::pair{"bvh-", Method::Bvh}}) {
-          if (method == Method::Brute && where == "still") continue;  // no cache: still costs what near does
+        for (const auto& [prefix, way] : {std::pair{"prepared-", Method::Brute},
+                                          std::pair{"dual-", Method::Hextree}, std::pair{"bvh-", Method::Bvh}}) {
+          if (way == Method::Brute && where == "still") continue;  // no cache: still costs what near does
+          const Method method = way;  // a lambda captures a variable, not a structured binding (clang 14)
           benchmark::RegisterBenchmark((prefix + where + key).c_str(), [s, &size, k, method](benchmark::State& st) {
             byLight(st, method, s, size, k);
           });
