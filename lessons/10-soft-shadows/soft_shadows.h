@@ -1,10 +1,10 @@
 // Lesson 10's parts: the scene's measures, the stencil bits, and the lesson itself. main.cpp
 // defines the algorithms, in the papers' order (Kilgard's eight bits, the corrected count, the
 // penumbra wedges); reference.cpp the exact answers the pictures are judged by (the analytic
-// visible fraction, the converged ray cast, the penumbra's width measured); classroom.cpp what
-// surrounds them (the options, variants and camera, the scene, the targets and the drawing the
-// passes share, the oracle's claim); convex_hull.cpp the wedges' hulls. None of the last two
-// changes how a shadow is counted.
+// visible fraction, the converged ray cast, the penumbra's width measured); convex_hull.cpp the
+// hull each wedge is drawn as; classroom.cpp what surrounds them (the options, variants and
+// camera, the scene, the targets and the drawing the passes share, the oracle's claim), none of
+// which changes how a shadow is counted.
 #pragma once
 #include <cstddef>
 #include <memory>
