@@ -297,8 +297,8 @@ void SoftShadows::drawScene(const Frame& f, const std::vector<Object>& scene, gl
   if (allLights) {
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, lightsTexture_);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, static_cast<GLsizei>(samples_.size()), 1, 0, GL_RGBA,
-                 GL_FLOAT, samples_.data());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, static_cast<GLsizei>(samples_.size()), 1, 0, GL_RGBA, GL_FLOAT,
+                 samples_.data());
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glActiveTexture(GL_TEXTURE0);
@@ -329,8 +329,7 @@ void SoftShadows::drawVolume(Frame& f, const ShadowVolume& v) {
 
 // ---- the targets, the snapshots, the picture ------------------------------------------------------
 
-Target::Target(glm::ivec2 size, GLenum colourFormat, bool depthStencil)
-    : size_(size), format_(colourFormat) {
+Target::Target(glm::ivec2 size, GLenum colourFormat, bool depthStencil) : size_(size), format_(colourFormat) {
   glGenFramebuffers(1, &fbo_);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   glGenTextures(1, &colour_);
@@ -344,8 +343,7 @@ Target::Target(glm::ivec2 size, GLenum colourFormat, bool depthStencil)
     glGenRenderbuffers(1, &depthStencil_);
     glBindRenderbuffer(GL_RENDERBUFFER, depthStencil_);
     glRenderbufferStorage(GL_RENDERBUFFER, depthStencilFormat(DepthFormat::Fixed24), size.x, size.y);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                              depthStencil_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depthStencil_);
   }
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw std::runtime_error("lesson 10's accumulation framebuffer is incomplete");
@@ -371,8 +369,7 @@ void blit(GLuint from, GLuint to, glm::ivec2 size, GLbitfield mask) {
 
 // A named pass's snapshot: the target copied into the framework's framebuffer, where it is read.
 void SoftShadows::endPass(Frame& f, const char* name) {
-  blit(target_->fbo(), framework_, f.size,
-       GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  blit(target_->fbo(), framework_, f.size, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   f.pass(name);
   target_->bind();  // the blit left the framework's framebuffer bound
 }

@@ -58,9 +58,7 @@ void SoftShadows::render(Frame& f) {
   const bool kilgard = f.option("method") == 1;
   framework_ = f.framebuffer();
   size_ = f.size;
-  const GLenum format = f.option("float") == 1   ? GL_RGBA32F
-                        : f.option("float") == 2 ? GL_RGBA16F
-                                                 : GL_RGBA8;
+  const GLenum format = f.option("float") == 1 ? GL_RGBA32F : f.option("float") == 2 ? GL_RGBA16F : GL_RGBA8;
   if (!target_ || !target_->fits(f.size, format)) target_ = std::make_unique<Target>(f.size, format, true);
   if (!saved_ || !saved_->fits(f.size, GL_RGBA8)) saved_ = std::make_unique<Target>(f.size, GL_RGBA8, true);
 
@@ -89,11 +87,10 @@ void SoftShadows::render(Frame& f) {
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LEQUAL);  // the mat, drawn after the ground at equal depths, shows
+  glDepthFunc(GL_LEQUAL);                            // the mat, drawn after the ground at equal depths, shows
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);  // alpha counts lights, from 0
   const bool visibility = f.on("visibility") || f.on("reference");
-  drawScene(f, scene, glm::vec4(0, 1, 0, 0), glm::vec3(0.0f), visibility ? glm::vec3(0.0f) : kAmbient,
-            false);
+  drawScene(f, scene, glm::vec4(0, 1, 0, 0), glm::vec3(0.0f), visibility ? glm::vec3(0.0f) : kAmbient, false);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   endPass(f, "ambient");
 
@@ -265,8 +262,7 @@ void SoftShadows::countVolumes(Frame& f, const glm::vec4& light, bool inWedges) 
       volume_.set("colour", glm::vec4(1.0f, 0.85f, 0.2f, 1.0f));
       volumeStream_.draw(0, static_cast<GLsizei>(sides));  // the sides
       // The dark cap at infinity fails LESS by itself.
-      volumeStream_.draw(static_cast<GLint>(sides + lightCap),
-                         static_cast<GLsizei>(3 * v.darkCapTriangles));
+      volumeStream_.draw(static_cast<GLint>(sides + lightCap), static_cast<GLsizei>(3 * v.darkCapTriangles));
       glDepthFunc(GL_NEVER);  // the light cap lies on the caster's surface: never in front of it
       volumeStream_.draw(static_cast<GLint>(sides), static_cast<GLsizei>(lightCap));
       glDepthFunc(GL_LESS);
