@@ -7,7 +7,9 @@
 A generated table sits in its page between two markers, which the page's reader does not see:
 
     <!-- table NAME: written by tests/docs/page_tables.py; do not edit by hand -->
+
     | ... |
+
     <!-- end table NAME -->
 
 Each NAME below runs a lesson with --stats and formats what it reports. Counts only: no timing is
@@ -175,7 +177,7 @@ def main():
         path = ROOT / page
         text = path.read_text()
         a, b = span(text, name)
-        fresh = "\n".join(make()) + "\n"
+        fresh = "\n" + "\n".join(make()) + "\n\n"  # blank lines: the markers stay apart from the table
         if args[1] == "--write":
             path.write_text(text[:a] + fresh + text[b:])
             print(f"{page}: table {name} written")
