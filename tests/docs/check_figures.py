@@ -19,6 +19,7 @@ import filecmp
 import pathlib
 import re
 import shlex
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -150,9 +151,12 @@ def main():
     if "--write" in args:
         if folder not in OTHERS:
             sys.exit(f"{folder}: regenerate with cmake --build build --target docs-figures")
-        out = ROOT / "docs/figures" / folder
-        generate(build, folder, files, out, python)
-        print(f"wrote docs/figures/{folder}/")
+        with tempfile.TemporaryDirectory() as tmp:  # what the pages link, not the runs' other files
+            generate(build, folder, files, pathlib.Path(tmp), python)
+            for f in files:
+                (ROOT / "docs/figures" / folder / f).parent.mkdir(parents=True, exist_ok=True)
+                shutil.copyfile(pathlib.Path(tmp) / f, ROOT / "docs/figures" / folder / f)
+        print(f"wrote docs/figures/{folder}/ ({len(files)} files)")
         return
     options = args[args.index("--options") + 1] if "--options" in args else ""
     with tempfile.TemporaryDirectory() as tmp:
