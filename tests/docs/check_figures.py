@@ -93,7 +93,7 @@ def render_lesson(build, folder, files, out, options, page):
         elif variant not in variants:
             variants.append(variant)
     if variants:
-        command = ["cmake", f"-DEXE={build}/lessons/{folder}", f"-DOPTIONS={options}", f"-DOUT={out}",
+        command = ["cmake", f"-DEXE={build}/lessons/{folder}", f"-DOPTIONS={options}", f"-DOUT={out / folder}",
                    f"-DSIZE={SIZE}", f"-DTIME={TIME}", f"-DVARIANTS={';'.join(variants)}"]
         if page:
             command.append(f"-DPAGE={ROOT}/docs/{folder}.md")
@@ -106,6 +106,7 @@ def render_lesson(build, folder, files, out, options, page):
 
 
 def generate(build, folder, files, out, python):
+    out.mkdir(parents=True, exist_ok=True)
     if folder == "oracle":
         commands = oracle_commands(build, files, out)
     else:
@@ -161,11 +162,12 @@ def main():
     options = args[args.index("--options") + 1] if "--options" in args else ""
     with tempfile.TemporaryDirectory() as tmp:
         out = pathlib.Path(tmp)
+        out = out / folder  # figures.cmake takes the lesson's name from its folder's
         if folder in OTHERS:
             covered = set()
             generate(build, folder, files, out, python)
         else:
-            covered = render_lesson(build, folder, files, out, options, "--page" in args)
+            covered = render_lesson(build, folder, files, out.parent, options, "--page" in args)
         stale = []
         compare = build / "tests/docs/figure_compare"
         for f in files:
