@@ -2,7 +2,8 @@
 """The pages' tables of measured counts, written from a fresh run (ctest -L docs, docs.tables.*).
 
     page_tables.py BUILD_DIR --write [NAME...]   # measure and rewrite the tables in the pages
-    page_tables.py BUILD_DIR --check NAME        # measure and compare with the page: a test
+    page_tables.py BUILD_DIR --check [NAME...]   # measure and compare with the pages: a test
+    page_tables.py BUILD_DIR --check --page P.md # the tables of one page (docs.tables.<page>)
 
 A generated table sits in its page between two markers, which the page's reader does not see:
 
@@ -21,7 +22,7 @@ import re
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "lessons"))
-from lesson_run import stats  # noqa: E402
+import lesson_run  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 BUILD = None
@@ -29,6 +30,17 @@ BUILD = None
 
 def lesson(name):
     return BUILD / "lessons" / name
+
+
+_runs = {}
+
+
+def stats(exe, args):
+    """lesson_run.stats, each run once per process: tables that share runs share them."""
+    key = (str(exe), tuple(args))
+    if key not in _runs:
+        _runs[key] = lesson_run.stats(exe, args)
+    return _runs[key]
 
 
 def merged(rows, key_columns):
@@ -111,7 +123,7 @@ def csg_passes():
     lines = ["| variant | products | primitives | select | parity | far | merge | layers counted |",
              "|---|---|---|---|---|---|---|---|"]
     for variant, what in CSG_PASS_VARIANTS.items():
-        c = stats(lesson("14-csg"), ["--size", "320x240", "--variant", variant])["counts"]
+        c = stats(lesson("14-csg"), ["--size", "320x240", "--set", "oracle=1", "--variant", variant])["counts"]
         cells = [c.get(k, "") for k in ("products", "literals", "select_passes", "parity_passes", "far_passes",
                                          "merge_passes", "layers_counted")]
         lines.append(f"| {variant}{f' ({what})' if what else ''} | " + " | ".join(str(x) for x in cells) + " |")
@@ -182,6 +194,10 @@ def main():
         sys.exit(__doc__)
     BUILD = pathlib.Path(args[0]).resolve()
     names = args[2:] or list(TABLES)
+    if names[0] == "--page":
+        names = [n for n, (page, _) in TABLES.items() if page == f"docs/{names[1]}"]
+        if not names:
+            sys.exit(f"page_tables.py: no generated table in docs/{args[3]}")
     for name in names:
         if name not in TABLES:
             sys.exit(f"page_tables.py: unknown table '{name}' (known: {', '.join(TABLES)})")
