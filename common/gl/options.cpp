@@ -10,6 +10,7 @@
 
 #include "geometry/solar.h"
 #include "gl/errors.h"
+#include "gl/window_keys.h"
 
 namespace stencil {
 namespace {
@@ -310,9 +311,11 @@ std::string helpText(const LessonInfo& info, const std::string& program, bool re
       << "                           exit 1 on a difference, 77 when no context can be made\n"
       << "  --update-golden          write the goldens instead of comparing\n"
       << "  --artifacts DIR          where a failed comparison leaves its images and summary.json\n\n"
-      << "Window keys: drag to orbit, wheel to zoom, R resets the camera, V next variant,\n"
-      << "P steps through the passes, Tab cycles colour/stencil/bit planes/depth (the depth view as\n"
-      << "--depth-out draws it), Space pauses, S saves a screenshot, Esc quits.\n";
+      << "Window keys\n";
+  for (const WindowKey& k : kWindowKeys) {
+    const std::string keys = k.keys;
+    out << "  " << keys << std::string(keys.size() < 23 ? 23 - keys.size() : 1, ' ') << "  " << k.what << "\n";
+  }
   if (!info.options.empty()) {
     out << "\nOptions (--set NAME=VALUE, or the key in the window)\n";
     for (const Option& o : info.options)

@@ -14,6 +14,7 @@ the machine) per method, pattern and state, with and without WORK iterations of 
 fragment: FRAMES + 1 frames less one frame (which writes the pattern), over FRAMES.
 
     tests/lessons/dissolve_figures.py BUILD_DIR [--no-strips] [--no-timing]
+    tests/lessons/dissolve_figures.py BUILD_DIR --figures-only OUT_DIR    # the pictures only, into OUT_DIR
 
 Reads and writes PNG with the standard library only (8-bit RGBA, as the lessons write them).
 """
@@ -127,17 +128,16 @@ def crops(exe, tmp, out):
             frame = read_png(png)
             pictures.append(magnified(frame, (frame[0] - CROP) // 2, (frame[1] - CROP) // 2, CROP, CROP, ZOOM))
         write_png(out / f"crop-{slug}.png", *side_by_side(pictures))
-        print(f"wrote docs/figures/12-dissolve-strips/crop-{slug}.png", file=sys.stderr)
+        print(f"wrote {out / f'crop-{slug}.png'}", file=sys.stderr)
     png = pathlib.Path(tmp) / "start-clamped.png"
     run(exe, ["--size", SIZE, "--time", "1", "--variant", "start-clamped", "--out", str(png)])
     frame = read_png(png)
     width, height = 80, 60  # a quarter of the frame's width and height, from its top left
     write_png(out / "start-clamped-crop.png", width * ZOOM, height * ZOOM, magnified(frame, 0, 0, width, height, ZOOM))
-    print("wrote docs/figures/12-dissolve-strips/start-clamped-crop.png", file=sys.stderr)
+    print(f"wrote {out / 'start-clamped-crop.png'}", file=sys.stderr)
 
 
-def strips(exe):
-    out = ROOT / "docs/figures/12-dissolve-strips"
+def strips(exe, out):
     out.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory() as tmp:
         for p, slug in enumerate(SLUGS):
@@ -160,7 +160,7 @@ def strips(exe):
                     row += f[2][y]
                 rows.append(row)
             write_png(out / f"strip-{slug}.png", width, frames[0][1], rows)
-            print(f"wrote docs/figures/12-dissolve-strips/strip-{slug}.png", file=sys.stderr)
+            print(f"wrote {out / f'strip-{slug}.png'}", file=sys.stderr)
         crops(exe, tmp, out)
 
 
@@ -216,8 +216,11 @@ def main():
     if len(sys.argv) < 2:
         sys.exit(__doc__)
     exe = pathlib.Path(sys.argv[1]) / "lessons/12-dissolve"
+    if "--figures-only" in sys.argv:
+        strips(exe, pathlib.Path(sys.argv[sys.argv.index("--figures-only") + 1]))
+        return
     if "--no-strips" not in sys.argv:
-        strips(exe)
+        strips(exe, ROOT / "docs/figures/12-dissolve-strips")
     tables(exe, "--no-timing" not in sys.argv)
 
 
