@@ -52,7 +52,7 @@ class Csg final : public Lesson {
   bool trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targets,
                  const std::vector<int>& trimmers, int layer);
   void mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets);
-  int productDepthComplexity(Frame& f, const CsgProduct& p);
+  int targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<int>& targets);
   void scs(Frame& f, const SumOfProducts& sop);
   void clipByIntersection(Frame& f, const CsgProduct& p);
 
@@ -66,6 +66,7 @@ class Csg final : public Lesson {
   void drawDepth(int i);
   void drawShaded(int i);
   void drawMerged(int i);
+  void frontFace(int i);
   void drawQuad(const glm::vec4& colour, float depth);
   // Back to the far plane, the background's colour where colour is written.
   void farQuad() { drawQuad(kBackground, 1.0f); }
@@ -79,10 +80,12 @@ class Csg final : public Lesson {
   GpuMesh quad_;
   std::vector<std::unique_ptr<GpuMesh>> meshes_;
   std::vector<glm::vec3> colours_;
+  std::vector<bool> convex_;  // per primitive, from its mesh (isConvex)
   std::vector<glm::mat4> models_;
   std::string preparedFor_;
   GLuint work_ = 0, workDepth_ = 0, workColour_ = 0;
   glm::ivec2 workSize_{0};
+  bool mirroredView_ = false;  // this frame's view matrix has a negative determinant
 };
 
 // ---- classroom.cpp ------------------------------------------------------------------------------
@@ -90,6 +93,10 @@ class Csg final : public Lesson {
 // The scene the options (or --scene's file) ask for, at the frame's time. Throws UsageError for
 // a scene file with method 0.
 CsgScene sceneFor(const Frame&, const Scene* fromFile);
+
+// Whether a closed mesh bounds a convex solid (geometry/shadow_volume.h's isConvex on the mesh
+// welded by position): SCS takes only these, and Goldfeather tries one layer of them.
+bool convexMesh(const Mesh& mesh);
 
 // The lesson's name, options, variants (with their cameras) and passes.
 LessonInfo lessonInfo();

@@ -65,6 +65,7 @@ CsgTree Csg::prepare(const CsgScene& scene, double time) {
     for (const Primitive& p : scene.primitives) {
       meshes_.push_back(std::make_unique<GpuMesh>(p.mesh));
       colours_.push_back(p.colour);
+      convex_.push_back(convexMesh(p.mesh));
     }
     preparedFor_ = scene.expression;
   }
@@ -106,18 +107,29 @@ void Csg::setLighting(const Program& p, const Frame& f) const {
 
 void Csg::drawDepth(int i) {
   depthOnly_.set("model", models_[static_cast<std::size_t>(i)]);
+  frontFace(i);
   depthOnly_.set("colour", glm::vec4(1.0f));
   meshes_[static_cast<std::size_t>(i)]->draw();
 }
 void Csg::drawShaded(int i) {
   light_.set("model", models_[static_cast<std::size_t>(i)]);
+  frontFace(i);
   light_.set("colour", colours_[static_cast<std::size_t>(i)]);
   meshes_[static_cast<std::size_t>(i)]->draw();
 }
 void Csg::drawMerged(int i) {
   merge_.set("model", models_[static_cast<std::size_t>(i)]);
+  frontFace(i);
   merge_.set("colour", colours_[static_cast<std::size_t>(i)]);
   meshes_[static_cast<std::size_t>(i)]->draw();
+}
+
+// A mirroring model (a negative determinant: scale -1 1 1, OpenSCAD's mirror()) or a mirrored view
+// turns primitive i's triangles round on screen: its front faces then wind clockwise there. Both
+// together cancel. Every cull and every front/back stencil operation follows this.
+void Csg::frontFace(int i) {
+  const bool mirrored = (glm::determinant(glm::mat3(models_[static_cast<std::size_t>(i)])) < 0.0f) != mirroredView_;
+  glFrontFace(mirrored ? GL_CW : GL_CCW);
 }
 
 // A full-screen quad at window depth `depth` (0 near, 1 far).

@@ -25,7 +25,7 @@
 // an intersection of primitives minus others. A product's surface is made of its primitives'
 // surfaces, each trimmed by all the others: a target primitive's faces (front faces of an
 // intersected one, back faces of a subtracted one) into a cleared depth buffer of its own, then
-// per other primitive a parity bit (INVERT where its faces lie in front), then the pixels whose
+// per other primitive a parity bit (INVERT where its faces lie behind: z-fail), then the pixels whose
 // bits say "outside an intersected one" or "inside a subtracted one" pushed to the far plane.
 // What is left is drawn into the frame where the fragment is that depth, the depth test keeping
 // the nearest of all: products merge by depth. A concave target has several faces along a ray;
@@ -60,6 +60,7 @@ void Csg::render(Frame& f) {
   const int method = f.option("method");
   const CsgScene scene = sceneFor(f, fromFile_);
   const CsgTree tree = prepare(scene, f.time);
+  mirroredView_ = glm::determinant(glm::mat3(f.view)) < 0.0f;  // a mirrored camera
 
   glClearColor(kBackground.r, kBackground.g, kBackground.b, kBackground.a);
   glClearDepth(1.0);
@@ -80,6 +81,7 @@ void Csg::render(Frame& f) {
     goldfeather(f, normalize(tree), method == kLayered);
 
   glDisable(GL_CULL_FACE);  // GL's defaults again
+  glFrontFace(GL_CCW);
   glCullFace(GL_BACK);
   glDisable(GL_STENCIL_TEST);
   glDepthFunc(GL_LESS);
@@ -192,7 +194,7 @@ void Csg::goldfeather(Frame& f, const SumOfProducts& sop, bool layered) {
     std::vector<int> targets = product.intersected;
     targets.insert(targets.end(), product.subtracted.begin(), product.subtracted.end());
     if (layered) {
-      const int k = f.on("queries") ? 255 : productDepthComplexity(f, product);
+      const int k = f.on("queries") ? 255 : targetDepthComplexity(f, product, targets);
       for (int layer = 0; layer < k; ++layer)
         if (!trimLayer(f, product, targets, targets, layer)) break;
     } else {
@@ -200,7 +202,13 @@ void Csg::goldfeather(Frame& f, const SumOfProducts& sop, bool layered) {
         std::vector<int> others;
         for (int y : targets)
           if (y != x) others.push_back(y);
-        for (int layer = 0; layer < f.option("convexity"); ++layer)
+        // The target's convexity: 1 for a convex mesh, else the most of its target faces any
+        // pixel's ray crosses (lesson 13's count of them, this frame), never a guess; a bound
+        // given with --set convexity overrides it (to show what too low a bound does).
+        const int c = f.option("convexity") > 0 ? f.option("convexity")
+                      : convex_[static_cast<std::size_t>(x)] ? 1
+                                                             : targetDepthComplexity(f, product, {x});
+        for (int layer = 0; layer < c; ++layer)
           if (!trimLayer(f, product, {x}, others, layer)) break;
       }
     }
@@ -248,9 +256,12 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
   if (selected == 0) return false;
   f.count("layers");  // a layer with fragments, trimmed and merged
 
-  // 2. Parity: one stencil bit per trimming primitive, INVERT where its faces lie in front of
-  // the selected surface or on it (LEQUAL: a surface counts as inside the intersected
-  // primitive it belongs to and outside the subtracted one). After 8 bits, or the last, the
+  // 2. Parity: one stencil bit per trimming primitive, INVERT where its faces lie behind the
+  // selected surface (z-fail parity, as OpenCSG 1.8 counts: a closed primitive has as many faces
+  // along a ray in front of a point as behind it, modulo 2, and those behind survive where the
+  // near plane cuts the primitive or the eye is inside it; the far plane must not cut it). A
+  // face on the surface is not behind it: a surface counts as inside the intersected primitive it
+  // belongs to and outside the subtracted one. After 8 bits, or the last, the
   // pixels whose bits are not the product's (1 inside an intersected primitive, 0 outside a
   // subtracted one) go to the far plane, and the bits start again. The last batch's bits stay
   // in the stencil for the pass stepper.
@@ -261,7 +272,7 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
   for (std::size_t i = 0; i < trimmers.size(); ++i) {
     const int y = trimmers[i];
     if (f.on("stencil")) {
-      glDepthFunc(GL_LEQUAL);
+      glDepthFunc(GL_GREATER);
       glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
       glDepthMask(GL_FALSE);  // counted, not drawn
       glStencilMask(1u << bit);
@@ -315,10 +326,10 @@ void Csg::mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& 
   f.pass("merge");
 }
 
-// Lesson 13's count on the product's target faces: INCR on every fragment, the depth test
+// Lesson 13's count on the targets' faces (all the product's, layered; one concave target's, method 1): INCR on every fragment, the depth test
 // off; the largest count, found by bisection with stencil LESS and occlusion queries, is the
 // number of layers the layered method needs.
-int Csg::productDepthComplexity(Frame& f, const CsgProduct& p) {
+int Csg::targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<int>& targets) {
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glStencilMask(0xFF);
@@ -328,8 +339,6 @@ int Csg::productDepthComplexity(Frame& f, const CsgProduct& p) {
   glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_ALWAYS, 0, 0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
-  std::vector<int> targets = p.intersected;
-  targets.insert(targets.end(), p.subtracted.begin(), p.subtracted.end());
   drawTargets(p, targets, Paint::Depth);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   int low = 0, high = 255;  // the largest count lies in [low, high]
@@ -393,25 +402,27 @@ void Csg::scs(Frame& f, const SumOfProducts& sop) {
     for (int a : p.intersected) drawShaded(a);
     clipByIntersection(f, p);
     f.pass("intersect");
-    // 2. The subtraction sequence: where the surface lies inside s (s's front face in front of
-    // it, its back face behind), the surface moves back to s's back face.
+    // 2. The subtraction sequence: where the surface lies inside s (s's back face behind it,
+    // its front face not: in front, or cut away by the near plane when the eye is inside s), the
+    // surface moves back to s's back face. The front face is tested behind (z-fail) so that a
+    // front face the near plane removed reads as in front.
     const std::vector<int> order = subtractionSequence(static_cast<int>(p.subtracted.size()));
     f.count("sequence_length", order.size());
     for (int i : order) {
       const int s = p.subtracted[static_cast<std::size_t>(i)];
       glStencilMask(0xFF);
       glClear(GL_STENCIL_BUFFER_BIT);
-      glDepthFunc(GL_LESS);  // s's front face in front of the surface
+      glDepthFunc(GL_GEQUAL);  // s's front face behind the surface, or on it: the surface is not inside s
       glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
       glDepthMask(GL_FALSE);
       glStencilFunc(GL_ALWAYS, 1, 0xFF);
       glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
       glCullFace(GL_BACK);
       drawDepth(s);
-      glDepthFunc(GL_GREATER);  // and its back face behind it: the surface is inside s
+      glDepthFunc(GL_GREATER);  // elsewhere, its back face behind it: the surface is inside s
       glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
       glDepthMask(GL_TRUE);  // it moves to that back face
-      glStencilFunc(GL_EQUAL, 1, 0xFF);
+      glStencilFunc(GL_EQUAL, 0, 0xFF);
       glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
       glCullFace(GL_FRONT);
       drawShaded(s);

@@ -1,5 +1,7 @@
 // Lesson 14's test hook: the frame's depth and the primitive its stencil records, against the CSG
 // ray cast (geometry/csg.h), reported as --stats counts oracle_*.
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -16,8 +18,10 @@ void Csg::checkAgainstRayCast(Frame& f, const CsgScene& scene, const CsgTree& tr
   // 8 stencil bits record the primitive modulo 255 (0 is none): past 254 primitives the ray
   // cast's are compared modulo 255 too.
   if (method != kTwoSolids)
-    for (int& e : expected.primitive)
-      if (e >= 0) e %= 255;
+    for (std::size_t i = 0; i < expected.primitive.size(); ++i) {
+      if (expected.primitive[i] >= 0) expected.primitive[i] %= 255;
+      for (int& s : expected.sharedWith[i]) s %= 255;
+    }
   const std::size_t w = static_cast<std::size_t>(f.size.x), h = static_cast<std::size_t>(f.size.y);
   std::vector<float> depthRows(w * h);
   std::vector<std::uint8_t> stencilRows(w * h);
@@ -37,13 +41,21 @@ void Csg::checkAgainstRayCast(Frame& f, const CsgScene& scene, const CsgTree& tr
     else
       primitive[i] = s == 0 ? kNoSurface : s - 1;
   }
-  // Depth in window units: the fixed-point buffer's steps are 2^-24; the tolerance allows for
-  // the rasterizer's interpolation against the exact intersection.
-  const CsgReport r = compareCsg(expected, depth, primitive, 1e-4f);
+  // Edges from the geometry: what can be seen changes within the pixel's square, grown by the
+  // rasterizer's vertex snapping (2^-GL_SUBPIXEL_BITS pixels).
+  GLint subpixelBits = 4;  // GL's least
+  glGetIntegerv(GL_SUBPIXEL_BITS, &subpixelBits);
+  const float snap = std::ldexp(1.0f, -std::max(subpixelBits, 4));
+  const std::vector<bool> edges = csgEdgePixels(primitives, f.projection * f.view, f.size, snap);
+  // Depth in window units: a few of the 24-bit buffer's steps (2^-24: its rounding, the ray
+  // cast's float rounding near 1, the rasterizer's interpolation), plus the surface's slope over
+  // the snapping.
+  const CsgReport r = compareCsg(expected, depth, primitive, edges, 4.0f * std::ldexp(1.0f, -24), snap);
   f.count("oracle_pixels", r.pixels);
   f.count("oracle_primitive_disagreements", r.primitiveDisagreements);
   f.count("oracle_depth_disagreements", r.depthDisagreements);
   f.count("oracle_on_edges", r.onEdges);
+  f.count("oracle_edge_pixels", r.edgePixels);
   f.count("oracle_largest_depth_error_1e9", static_cast<std::uint64_t>(r.largestDepthError * 1e9f));
 }
 
