@@ -107,6 +107,10 @@ struct CsgImage {
   glm::ivec2 size{0};
   std::vector<float> depth;    // window depth in [0, 1] (GL's default depth range); 1 where empty
   std::vector<int> primitive;  // the primitive whose surface is seen, or kNoSurface, kNearPlane
+  // Coincident faces: per pixel, the other primitives whose faces lie in the plane of the face
+  // seen there (empty almost everywhere). The rule: a shared surface belongs to every primitive
+  // lying in it, and a picture may show any of them.
+  std::vector<std::vector<int>> sharedWith;
 };
 
 // Ray casting of the solid: along each pixel centre's ray from the near plane, the intervals
@@ -115,7 +119,11 @@ struct CsgImage {
 // intervals) combined by the tree; the first surface is where the combination turns from
 // outside to inside. Its window depth comes from viewProjection (GL's clip conventions, clip z
 // from -w at the near plane to +w at the far; a far plane at infinity is fine), and its
-// primitive is the one whose surface it is. Surfaces past the far plane are not seen. Throws
+// primitive is the one whose surface it is. Crossings of coplanar faces of different primitives
+// (coincident faces: the hit points lie in both planes within float rounding of their distance
+// from the world's origin) count as one crossing, so a shared surface is decided by the tree, not
+// by rounding: A - B with B's top face in A's top face opens the pocket. Surfaces past the far
+// plane are not seen. Throws
 // std::invalid_argument for a primitive RayScene::add refuses or a tree naming a primitive
 // that is not given.
 CsgImage rayCastCsg(const std::vector<CsgPrimitive>& primitives, const CsgTree& tree,
@@ -126,16 +134,35 @@ struct CsgReport {
   std::size_t primitiveDisagreements = 0;  // another primitive seen (or none)
   std::size_t depthDisagreements = 0;      // the same primitive, a depth further than the tolerance
   std::size_t onEdges = 0;                 // of the disagreeing pixels, those on an edge (forgiven)
+  std::size_t edgePixels = 0;              // pixels the edges cross, disagreeing or not
   float largestDepthError = 0.0f;          // over the pixels that agree on the primitive, off edges
   bool passed() const { return primitiveDisagreements + depthDisagreements == onEdges; }
 };
 
-// A rendering's depth and primitive per pixel (same layout as CsgImage) against the ray cast. A
-// pixel is on an edge when a pixel of its 3x3 neighbourhood shows another primitive in the ray
-// cast, or the same one more than edgeDepthJump away in depth (a primitive's silhouette over
-// itself, a torus' near side over its far side). depthTolerance and edgeDepthJump are in window
-// depth units. Throws std::invalid_argument when the sizes do not match.
-CsgReport compareCsg(const CsgImage& expected, const std::vector<float>& depth,
-                     const std::vector<int>& primitive, float depthTolerance, float edgeDepthJump = 1e-3f);
+// The pixels (top row first, size.x by size.y) where a rasterized picture of the primitives may
+// differ from a ray through the pixel's centre, decided in the geometry: those whose square,
+// grown by `margin` pixels on every side, is crossed by an edge of what can be seen. The edges:
+// each primitive's possible silhouette edges (an edge between a face turned to the eye and one
+// turned away, or next to a face edge-on to the eye: where one primitive's surface passes behind
+// itself or another's), the curves where faces of two primitives cross (triangle against
+// triangle, where the CSG result turns from one primitive's surface to another's), and where
+// faces cross the near and the far plane. Faces' shared edges within one side of a surface are
+// not edges: both triangles give the same depth there, and the rasterizer covers each pixel
+// centre once. margin allows for the rasterizer's snapping of vertices to its sub-pixel grid:
+// 2^-GL_SUBPIXEL_BITS is enough. The primitives' triangles are placed by their models (an edge of
+// one mesh is two triangles with the same two corner positions). Throws std::invalid_argument
+// for a primitive without a mesh or a negative margin.
+std::vector<bool> csgEdgePixels(const std::vector<CsgPrimitive>& primitives, const glm::mat4& viewProjection,
+                                glm::ivec2 size, float margin);
+
+// A rendering's depth and primitive per pixel (same layout as CsgImage) against the ray cast.
+// A pixel agrees when it shows the ray cast's primitive, or one that shares the surface seen there
+// (CsgImage::sharedWith), at a depth within the tolerance: depthStep (the depth buffer's
+// resolution, window units) plus the depth the ray cast's surface changes by over `snap` pixels
+// in x and y (the rasterizer's vertex snapping, from the neighbouring pixels' depths on the same
+// surface). Disagreeing pixels on `edges` (csgEdgePixels) are counted as on edges, and forgiven.
+// Throws std::invalid_argument when the sizes do not match.
+CsgReport compareCsg(const CsgImage& expected, const std::vector<float>& depth, const std::vector<int>& primitive,
+                     const std::vector<bool>& edges, float depthStep, float snap);
 
 }  // namespace stencil

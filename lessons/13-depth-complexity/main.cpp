@@ -231,8 +231,10 @@ class DepthComplexity final : public Lesson {
     for (const SceneObject& o : scene.objects) {
       light_.set("model", o.modelAt(f.time));
       light_.set("colour", o.colour);
+      frontFaceFor(f, o.modelAt(f.time));
       gpu_.at(&o.mesh)->draw();
     }
+    frontFaceFor(f, glm::mat4(1.0f));
   }
 
   // The counted draw: the same triangles in the same order, nothing shaded (no colour is written).
@@ -240,8 +242,17 @@ class DepthComplexity final : public Lesson {
     flat_.set("colour", glm::vec4(1.0f));
     for (const SceneObject& o : scene.objects) {
       flat_.set("transform", f.projection * f.view * o.modelAt(f.time));
+      frontFaceFor(f, o.modelAt(f.time));
       gpu_.at(&o.mesh)->draw();
     }
+    frontFaceFor(f, glm::mat4(1.0f));
+  }
+
+  // A mirrored view or a mirroring model (a negative determinant, scale -1 1 1) turns a triangle
+  // round on screen: what faces the eye then winds clockwise. Both together cancel.
+  static void frontFaceFor(const Frame& f, const glm::mat4& model) {
+    const bool mirrored = (glm::determinant(glm::mat3(f.view)) < 0.0f) != (glm::determinant(glm::mat3(model)) < 0.0f);
+    glFrontFace(mirrored ? GL_CW : GL_CCW);
   }
 
   // Every light's shadow volumes as lesson 16 draws them for the chosen method, every fragment

@@ -132,7 +132,8 @@ TEST(DepthComplexity, TheStackCountsTheSameWithVolumesOn) {
 // culling; the mirrored view turns the front faces round, which culling must follow.
 TEST(DepthComplexity, SceneFilesAgreeWithTheRayCount) {
   for (const char* file :
-       {"builtin.scene", "two-lights.scene", "hard/mirrored-view.scene", "hard/open-mesh.scene"}) {
+       {"builtin.scene", "two-lights.scene", "hard/mirrored-view.scene", "hard/open-mesh.scene",
+        "hard/mirrored-one-sided.scene"}) {
     for (const char* cull : {"0", "1"}) {
       const auto r =
           run("scene",

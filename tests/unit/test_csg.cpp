@@ -4,6 +4,8 @@
 // plane inside the solid; compareCsg's edge rule.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <stdexcept>
 
@@ -194,21 +196,62 @@ TEST(Csg, CompareForgivesOnlyEdges) {
   expected.size = {4, 1};
   expected.depth = {0.5f, 0.5f, 0.5f, 1.0f};
   expected.primitive = {0, 0, 0, kNoSurface};
-  // Pixel 0 wrong in depth, off an edge; pixel 2 wrong in primitive, beside the empty pixel 3.
-  const CsgReport r = compareCsg(expected, {0.6f, 0.5f, 1.0f, 1.0f}, {0, 0, kNoSurface, kNoSurface}, 1e-3f);
+  expected.sharedWith.assign(4, {});
+  // Pixel 0 wrong in depth, off an edge; pixel 2 wrong in primitive, on an edge.
+  const std::vector<bool> edges = {false, false, true, true};
+  const CsgReport r = compareCsg(expected, {0.6f, 0.5f, 1.0f, 1.0f}, {0, 0, kNoSurface, kNoSurface}, edges, 1e-3f, 0.0f);
   EXPECT_EQ(r.depthDisagreements, 1u);
   EXPECT_EQ(r.primitiveDisagreements, 1u);
   EXPECT_EQ(r.onEdges, 1u);
+  EXPECT_EQ(r.edgePixels, 2u);
   EXPECT_FALSE(r.passed());
   EXPECT_NEAR(r.largestDepthError, 0.1f, 1e-6f);
-  EXPECT_TRUE(compareCsg(expected, expected.depth, expected.primitive, 0.0f).passed());
-  // A jump in depth within one primitive is an edge too: pixel 0 beside a pixel 0.01 further.
+  EXPECT_TRUE(compareCsg(expected, expected.depth, expected.primitive, edges, 0.0f, 0.0f).passed());
+  // A depth jump within one primitive is no edge by itself: only the geometry's edges forgive.
   expected.depth = {0.5f, 0.51f, 0.51f, 1.0f};
-  const CsgReport jump = compareCsg(expected, {0.51f, 0.51f, 0.51f, 1.0f}, expected.primitive, 1e-3f);
-  EXPECT_EQ(jump.depthDisagreements, 1u);
-  EXPECT_EQ(jump.onEdges, 1u);
-  EXPECT_FALSE(compareCsg(expected, {0.51f, 0.51f, 0.51f, 1.0f}, expected.primitive, 1e-3f, 0.1f).passed());
-  EXPECT_THROW(compareCsg(expected, {0.5f}, {0}, 0.0f), std::invalid_argument);
+  EXPECT_FALSE(compareCsg(expected, {0.51f, 0.51f, 0.51f, 1.0f}, expected.primitive, edges, 1e-3f, 0.0f).passed());
+  // The tolerance grows with the surface's slope over the snapping: 0.01 per pixel, half a pixel.
+  EXPECT_TRUE(compareCsg(expected, {0.504f, 0.51f, 0.51f, 1.0f}, expected.primitive, edges, 0.0f, 0.5f).passed());
+  // A shared surface may show any primitive lying in it.
+  expected.sharedWith[1] = {3};
+  EXPECT_TRUE(compareCsg(expected, expected.depth, {0, 3, 0, kNoSurface}, edges, 0.0f, 0.0f).passed());
+  EXPECT_FALSE(compareCsg(expected, expected.depth, {0, 2, 0, kNoSurface}, edges, 0.0f, 0.0f).passed());
+  EXPECT_THROW(compareCsg(expected, {0.5f}, {0}, {false}, 0.0f, 0.0f), std::invalid_argument);
+}
+
+TEST(Csg, EdgesAreTheGeometrys) {
+  // A cube face on, 41x41: its silhouette is the square's outline, and no pixel inside the face
+  // is an edge (the face's diagonal is no edge: both its triangles turn to the eye).
+  const Mesh cube = makeCube(1.0f);
+  const std::vector<CsgPrimitive> one = {{&cube, glm::mat4(1.0f)}};
+  const std::vector<bool> edges = csgEdgePixels(one, frontView(), {41, 41}, 1.0f / 256.0f);
+  const CsgImage im = rayCastCsg(one, parseCsg("A", {"A"}), frontView(), {41, 41});
+  std::size_t marked = 0;
+  for (int y = 0; y < 41; ++y)
+    for (int x = 0; x < 41; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y * 41 + x);
+      marked += edges[i];
+      // A pixel whose 3x3 neighbourhood all sees the cube, or all misses it, is no edge.
+      bool same = true;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int nx = std::clamp(x + dx, 0, 40), ny = std::clamp(y + dy, 0, 40);
+          same = same && im.primitive[static_cast<std::size_t>(ny * 41 + nx)] == im.primitive[i];
+        }
+      if (same) {
+        EXPECT_FALSE(edges[i]) << x << ", " << y;
+      }
+    }
+  EXPECT_GT(marked, 4u * 10u);
+  // Two cubes crossing: the curve where their faces cross is an edge, inside both outlines.
+  const Mesh other = makeCube(1.0f);
+  const std::vector<CsgPrimitive> two = {{&cube, glm::mat4(1.0f)},
+                                         {&other, glm::rotate(glm::mat4(1.0f), 0.5f, glm::vec3(0, 1, 0))}};
+  const std::vector<bool> crossing = csgEdgePixels(two, frontView(), {41, 41}, 1.0f / 256.0f);
+  std::size_t more = 0;
+  for (std::size_t i = 0; i < crossing.size(); ++i) more += crossing[i] && !edges[i];
+  EXPECT_GT(more, 0u);
+  EXPECT_THROW(csgEdgePixels(one, frontView(), {41, 41}, -1.0f), std::invalid_argument);
 }
 
 TEST(Csg, SubtractionSequencesHoldEveryOrdering) {
