@@ -51,6 +51,8 @@ struct WindowState {
   int sayCountsAfter = -1;                         // say the counts new in this frame (after a key changed an option)
   std::vector<std::string> countsBefore = {};      // the count names before the option changed
   FrameRate rate = {};
+  float optionsHeight = 0, bottomHeight = 0;
+  int layoutFrames = 0;  // frames drawn since the layout changed  // the panel's last layout: the options, the controls below
 };
 
 // The panel's width in screen pixels at a UI scale.
@@ -308,17 +310,23 @@ class Display {
 struct PanelFit {
   float contentBottom = 0, height = 0;  // screen pixels: the last widget's bottom, the panel's height
   std::vector<std::string> cut;         // labels or choices drawn narrower than their text
+  float optionsShown = 0, optionsWanted = 0;  // the options' scrolling area and what they need
 };
 
-// A combo box the panel's full width, its choice shown after `label` ("lesson: 02-stenciled-mirrors"),
-// its list as wide as its widest choice: no name is cut.
+// A combo box the panel's full width, its choice shown after `label` ("variant [V]: ops") or alone
+// where both do not fit, its list as wide as its widest choice: no name is cut.
 template <typename Names, typename Pick>
 void fullWidthCombo(const char* id, const std::string& label, const std::string& current, const Names& names,
                     const std::string& chosen, Pick pick, PanelFit& fit) {
   const ImGuiStyle& style = ImGui::GetStyle();
-  const std::string preview = label + ": " + current;
   const float arrow = ImGui::GetFrameHeight(), width = ImGui::GetContentRegionAvail().x;
-  if (ImGui::CalcTextSize(preview.c_str()).x + style.FramePadding.x * 2 + arrow > width) fit.cut.push_back(preview);
+  const auto fits = [&](const std::string& text) {
+    return ImGui::CalcTextSize(text.c_str()).x + style.FramePadding.x * 2 + arrow <= width;
+  };
+  // The label and its key where they fit, else the choice alone (the keys' hint names the key).
+  std::string preview = label + ": " + current;
+  if (!fits(preview)) preview = current;
+  if (!fits(preview)) fit.cut.push_back(preview);
   float widest = 0;
   for (const std::string& n : names) widest = std::max(widest, ImGui::CalcTextSize(n.c_str()).x);
   ImGui::SetNextWindowSizeConstraints(
@@ -353,10 +361,11 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
   float widestLabel = ImGui::CalcTextSize("after pass [P]").x;
   for (const Option& o : s.options)
     if (!(o.min == 0 && o.max == 1)) widestLabel = std::max(widestLabel, ImGui::CalcTextSize(label(o).c_str()).x);
-  const float sliderWidth = std::max(full - widestLabel - style.ItemInnerSpacing.x, full * 0.4f);
+  const float stepperWidth = std::max(full - widestLabel - style.ItemInnerSpacing.x, full * 0.4f);
+  // Cut: drawn past the right edge of the window (or child) it is in.
+  const auto rightEdge = [] { return ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x; };
   const auto checkCut = [&](const std::string& text) {
-    if (ImGui::GetItemRectMax().x > ImGui::GetWindowPos().x + style.WindowPadding.x + full + 0.5f)
-      fit.cut.push_back(text);
+    if (ImGui::GetItemRectMax().x > rightEdge() + 0.5f) fit.cut.push_back(text);
   };
 
   ImGui::TextWrapped("%s", s.info.title.c_str());
@@ -375,27 +384,50 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
   for (const Variant& v : s.info.variants) variants.push_back(v.name);
   fullWidthCombo("##variant", "variant [V]", s.variant, variants, s.variant,
                  [&](const std::string& n) { switchVariant(s, n); }, fit);
-  bool sameRow = false;  // the last widget was a checkbox that may take one beside it
-  for (Option& o : s.options) {
-    const std::string text = label(o);
-    if (o.min == 0 && o.max == 1) {
-      const float w = ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(text.c_str()).x;
-      if (sameRow && ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x + style.ItemSpacing.x + w <=
-                         style.WindowPadding.x + full)
-        ImGui::SameLine();
-      bool on = o.value != 0;
-      if (ImGui::Checkbox(text.c_str(), &on)) o.value = on ? 1 : 0;
-      sameRow = true;
-    } else {
-      const std::string name = valueName(o, o.value);
-      const std::string format = name.empty() ? "%d" : "%d: " + name;
-      ImGui::SetNextItemWidth(sliderWidth);
-      ImGui::SliderInt(text.c_str(), &o.value, o.min, o.max, format.c_str());
-      sameRow = false;
+  // The options take the room the controls below leave them, and scroll within it where they
+  // need more: the views, the pass stepper and the frame rate stay in the window. The heights are
+  // the last frame's (the first frame's guess is corrected by the second).
+  const std::string keys = std::string("drag: orbit  wheel: zoom  R: reset  S: screenshot (shift: with the panel)  "
+                                       "PgDn PgUp: next, previous lesson  F1: hide the panel  + -: text size  "
+                                       "F2: say the frame rate  Esc: quit") +
+                           (s.info.brush ? "  right drag: the lesson's brush" : "");
+  const float keysExtra = ImGui::CalcTextSize(keys.c_str(), nullptr, false, full).y - ImGui::GetTextLineHeight();
+  const float room = height - style.WindowPadding.y - ImGui::GetCursorPosY();
+  const float below = st.bottomHeight > 0 ? st.bottomHeight : 12 * ImGui::GetFrameHeightWithSpacing();
+  const float wanted = st.optionsHeight > 0 ? st.optionsHeight : 1e6f;
+  const bool fullKeys = wanted + below + keysExtra <= room;
+  if (!s.options.empty()) {
+    const float shown = std::max(std::min(wanted, room - below - (fullKeys ? keysExtra : 0.0f)),
+                                 2 * ImGui::GetFrameHeightWithSpacing());
+    fit.optionsShown = shown, fit.optionsWanted = wanted;
+    ImGui::BeginChild("##options", ImVec2(0, shown), false, ImGuiWindowFlags_NoNavInputs);
+    const float inner = ImGui::GetContentRegionAvail().x;
+    const float sliderWidth = std::max(inner - widestLabel - style.ItemInnerSpacing.x, inner * 0.4f);
+    bool sameRow = false;  // the last widget was a checkbox that may take one beside it
+    for (Option& o : s.options) {
+      const std::string text = label(o);
+      if (o.min == 0 && o.max == 1) {
+        const float w = ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(text.c_str()).x;
+        if (sameRow && ImGui::GetItemRectMax().x + style.ItemSpacing.x + w <= rightEdge())
+          ImGui::SameLine();
+        bool on = o.value != 0;
+        if (ImGui::Checkbox(text.c_str(), &on)) o.value = on ? 1 : 0;
+        sameRow = true;
+      } else {
+        const std::string name = valueName(o, o.value);
+        const std::string format = name.empty() ? "%d" : "%d: " + name;
+        ImGui::SetNextItemWidth(sliderWidth);
+        ImGui::SliderInt(text.c_str(), &o.value, o.min, o.max, format.c_str());
+        sameRow = false;
+      }
+      checkCut(text);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", o.help.c_str());
     }
-    checkCut(text);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", o.help.c_str());
+    st.optionsHeight = ImGui::GetCursorPosY() - style.ItemSpacing.y;
+    ImGui::EndChild();
   }
+  const float bottomStart = ImGui::GetCursorPosY();
+
   ImGui::Separator();
   ImGui::TextUnformatted("view [Tab]");
   int view = static_cast<int>(st.view);
@@ -407,7 +439,7 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
   }
   st.view = static_cast<View>(view);
   const std::string passName = stepName(s, st.passStep);
-  ImGui::SetNextItemWidth(sliderWidth);
+  ImGui::SetNextItemWidth(stepperWidth);
   ImGui::SliderInt("after pass [P]", &st.passStep, -1, passesRun(s) - 1, passName.c_str());
   checkCut("after pass [P]");
   ImGui::Checkbox("pause [Space]", &st.paused);
@@ -428,16 +460,11 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
         ImGui::TextWrapped("%s %llu", name.c_str(), static_cast<unsigned long long>(n));
   }
   // The keys in full where they fit, else one line.
-  const std::string keys = std::string("drag: orbit  wheel: zoom  R: reset  S: screenshot (shift: with the panel)  "
-                                       "PgDn PgUp: next, previous lesson  F1: hide the panel  + -: text size  "
-                                       "Esc: quit") +
-                           (s.info.brush ? "  right drag: the lesson's brush" : "");
-  const float wrapped = ImGui::CalcTextSize(keys.c_str(), nullptr, false, full).y;
-  const float below = height - style.WindowPadding.y - (ImGui::GetCursorPosY() - ImGui::GetScrollY());
-  if (wrapped <= below)
+  if (fullKeys)
     ImGui::TextWrapped("%s", keys.c_str());
   else
     ImGui::TextUnformatted(s.info.brush ? "keys: --help; right drag: brush" : "keys: --help lists them");
+  st.bottomHeight = ImGui::GetCursorPosY() - bottomStart - (fullKeys ? keysExtra : 0.0f);
   fit.contentBottom = ImGui::GetCursorPosY() - style.ItemSpacing.y + style.WindowPadding.y;
   ImGui::PopAllowKeyboardFocus();
   ImGui::End();
@@ -646,7 +673,9 @@ int runWindow(Session& s) {
         saveScreenshot(st, readColourPixels(0, w, h));
         st.windowScreenshot = false;
       }
-      if (st.sayLayout) {
+      // Said a frame after the change: the panel's layout uses the heights its last frame measured.
+      if (st.sayLayout && ++st.layoutFrames >= 2) {
+        st.layoutFrames = 0;
         // One line for what changed the layout (F1, a resize, the UI scale): the picture's size,
         // and whether the panel's widgets fit its height and width.
         std::string line = std::string(st.panel ? "panel shown" : "panel hidden") + ": the picture is " +
@@ -666,6 +695,9 @@ int runWindow(Session& s) {
             std::snprintf(room, sizeof room, "; the panel runs %.0f px past the bottom (it scrolls)",
                           fit.contentBottom - fit.height);
           line += room;
+          if (fit.optionsShown + 0.5f < fit.optionsWanted)
+            line += "; the options scroll (" + std::to_string(static_cast<int>(fit.optionsShown)) + " of " +
+                    std::to_string(static_cast<int>(fit.optionsWanted)) + " px shown)";
           for (const std::string& c : fit.cut) line += "; cut: " + c;
         }
         say(st, line);
