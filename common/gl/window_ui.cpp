@@ -147,6 +147,9 @@ std::string valueName(const Option& o, int value) {
         break;
     }
     std::string name = h.substr(end, stop - end);
+    // The name, not its explanation: up to a bracket, a colon or a semicolon ("jittered", not
+    // "jittered (one random sample a cell)").
+    name = name.substr(0, std::min({name.find(" ("), name.find(':'), name.find(';')}));
     while (!name.empty() && (name.back() == ' ' || name.back() == ',')) name.pop_back();
     if (!name.empty()) return name;
   }
@@ -429,6 +432,7 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
   const float bottomStart = ImGui::GetCursorPosY();
 
   ImGui::Separator();
+  ImGui::AlignTextToFramePadding();  // on the radio buttons' line
   ImGui::TextUnformatted("view [Tab]");
   int view = static_cast<int>(st.view);
   for (int v = 0; v < kViews; ++v) {
