@@ -417,8 +417,16 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
         if (ImGui::Checkbox(text.c_str(), &on)) o.value = on ? 1 : 0;
         sameRow = true;
       } else {
+        // The value's name where it fits in the slider (else the number alone; R's line and the
+        // tooltip give the name).
         const std::string name = valueName(o, o.value);
-        const std::string format = name.empty() ? "%d" : "%d: " + name;
+        std::string format = "%d";
+        if (!name.empty() && ImGui::CalcTextSize((std::to_string(o.value) + ": " + name).c_str()).x +
+                                     2 * style.FramePadding.x <=
+                                 sliderWidth) {
+          format = "%d: ";
+          for (const char c : name) format += c == '%' ? std::string("%%") : std::string(1, c);
+        }
         ImGui::SetNextItemWidth(sliderWidth);
         ImGui::SliderInt(text.c_str(), &o.value, o.min, o.max, format.c_str());
         sameRow = false;

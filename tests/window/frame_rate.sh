@@ -6,7 +6,7 @@
 # usage: tests/window/frame_rate.sh EXE [FLAGS...]
 set -uo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-out=$("$here/keys.sh" "$@" -- "F2=^frame rate: " "sleep:3" "F2=^frame rate: ")
+out=$("$here/keys.sh" "$@" -- "sleep:3" "F2=^frame rate: " "sleep:3" "F2=^frame rate: ")
 code=$?
 echo "$out"
 [ "$code" -eq 0 ] || exit "$code"
