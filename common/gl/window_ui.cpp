@@ -11,7 +11,9 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <string>
 
@@ -51,6 +53,9 @@ struct WindowState {
   int sayCountsAfter = -1;                         // say the counts new in this frame (after a key changed an option)
   std::vector<std::string> countsBefore = {};      // the count names before the option changed
   FrameRate rate = {};
+  // $STENCIL_FRAME_LOG: every frame's end on the window's clock, one a line, flushed at F2, so a
+  // test can count frames over wall time itself (tests/window/frame_rate.sh).
+  std::unique_ptr<std::ofstream> frameLog = {};
   float optionsHeight = 0, bottomHeight = 0;
   int layoutFrames = 0;  // frames drawn since the layout changed  // the panel's last layout: the options, the controls below
 };
@@ -219,6 +224,7 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
                     st.rate.fps(), st.rate.msPerFrame(), st.rate.intervals(),
                     st.rate.fps() > 0 ? static_cast<double>(st.rate.intervals()) / st.rate.fps() : 0.0,
                     st.rate.frames(), glfwGetTime());
+      if (st.frameLog) st.frameLog->flush();
       say(st, line);
       return;
     }
@@ -545,6 +551,8 @@ int runWindow(Session& s) {
   st.panel = !cl.frames && !cl.panelHidden;  // a --frames run is a test: the window is the picture alone
   st.view = static_cast<View>(std::clamp(cl.view, 0, kViews - 1));
   st.sayLayout = true;
+  if (const char* log = std::getenv("STENCIL_FRAME_LOG"); log && *log)
+    st.frameLog = std::make_unique<std::ofstream>(log);
   for (std::size_t i = 0; i < st.course.size(); ++i)
     if (st.course[i].filename() == s.info.id) st.lessonIndex = static_cast<int>(i);
   say(st, "lesson " + s.info.id + ": " + s.info.title +
@@ -716,7 +724,9 @@ int runWindow(Session& s) {
         st.sayLayout = false;
       }
       glfwSwapBuffers(window);
-      st.rate.frameEnded(glfwGetTime());
+      const double ended = glfwGetTime();
+      st.rate.frameEnded(ended);
+      if (st.frameLog) *st.frameLog << std::fixed << ended << "\n";
     }
   }
   // What the next lesson opens with: this window's picture size, place, scale, view and panel.
