@@ -220,7 +220,7 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
       // The panel's figure, with the frames counted since the window opened and the clock, so a
       // test can set it against frames over wall time.
       char line[160];
-      std::snprintf(line, sizeof line, "frame rate: %.2f fps, %.2f ms a frame (%zu frames in the last %.2f s); frame %lld at %.3f s",
+      std::snprintf(line, sizeof line, "frame rate: %.2f fps, %.2f ms a frame (%zu frames in the last %.2f s); frame %lld at %.6f s",
                     st.rate.fps(), st.rate.msPerFrame(), st.rate.intervals(),
                     st.rate.fps() > 0 ? static_cast<double>(st.rate.intervals()) / st.rate.fps() : 0.0,
                     st.rate.frames(), glfwGetTime());

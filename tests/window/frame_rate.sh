@@ -22,7 +22,7 @@ while read -r shown clock; do
       last = -1; for (i = 0; i < n; ++i) if (t[i] <= now) last = i
       first = last; while (first > 0 && t[first] > t[last] - 1) --first
       m = (last - first) / (t[last] - t[first])
-      printf "shown %.2f fps at %.3f s; counted %d frames in %.3f s = %.2f fps; off by %.1f%%\n", s, now, last - first, t[last] - t[first], m, 100 * (s - m) / m
+      printf "shown %.2f fps at %.6f s; counted %d frames in %.3f s = %.2f fps; off by %.1f%%\n", s, now, last - first, t[last] - t[first], m, 100 * (s - m) / m
       exit (s > 1.1 * m || s < 0.9 * m) ? 1 : 0
     }' "$log" || bad=1
 done < <(printf '%s\n' "$out" | grep '^F2: frame rate: ' | sed -E 's/.*: ([0-9.]+) fps, .* frame [0-9]+ at ([0-9.]+) s$/\1 \2/')
