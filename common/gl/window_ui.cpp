@@ -371,8 +371,9 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
   for (const Option& o : s.options)
     if (!(o.min == 0 && o.max == 1)) widestLabel = std::max(widestLabel, ImGui::CalcTextSize(label(o).c_str()).x);
   const float stepperWidth = std::max(full - widestLabel - style.ItemInnerSpacing.x, full * 0.4f);
-  // Cut: drawn past the right edge of the window (or child) it is in.
-  const auto rightEdge = [] { return ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x; };
+  // Cut: drawn past the right edge of the window (or child) it is in, taken where a row starts.
+  float edge = ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x;
+  const auto rightEdge = [&] { return edge; };
   const auto checkCut = [&](const std::string& text) {
     if (ImGui::GetItemRectMax().x > rightEdge() + 0.5f) fit.cut.push_back(text);
   };
@@ -410,7 +411,8 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
                                  2 * ImGui::GetFrameHeightWithSpacing());
     fit.optionsShown = shown, fit.optionsWanted = wanted;
     ImGui::BeginChild("##options", ImVec2(0, shown), false, ImGuiWindowFlags_NoNavInputs);
-    const float inner = ImGui::GetContentRegionAvail().x;
+    const float inner = ImGui::GetContentRegionAvail().x, panelEdge = edge;
+    edge = ImGui::GetCursorScreenPos().x + inner;
     const float sliderWidth = std::max(inner - widestLabel - style.ItemInnerSpacing.x, inner * 0.4f);
     bool sameRow = false;  // the last widget was a checkbox that may take one beside it
     for (Option& o : s.options) {
@@ -442,6 +444,7 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
     }
     st.optionsHeight = ImGui::GetCursorPosY() - style.ItemSpacing.y;
     ImGui::EndChild();
+    edge = panelEdge;
   }
   const float bottomStart = ImGui::GetCursorPosY();
 
