@@ -694,12 +694,14 @@ int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, 
     if (choice.backend != Backend::Window) return runHeadless(*session);
     const int code = runWindow(*session);
     const std::optional<std::filesystem::path> next = session->nextLesson;
+    const std::vector<std::string> windowFlags = session->nextLessonFlags;
     session.reset();  // the window closes before the next lesson opens its own
     if (next) {
-      // The next lesson in the window, at this one's size; --quiet carries over.
-      const std::string exe = next->string(),
-                        size = std::to_string(cl.width) + "x" + std::to_string(cl.height);
-      std::vector<std::string> args = {exe, "--backend", "window", "--size", size};
+      // The next lesson in the window as this one left it (size, place, UI scale, view, panel);
+      // --quiet carries over.
+      const std::string exe = next->string();
+      std::vector<std::string> args = {exe, "--backend", "window"};
+      args.insert(args.end(), windowFlags.begin(), windowFlags.end());
       if (cl.quiet) args.push_back("--quiet");
       std::vector<char*> argvNext;
       for (std::string& a : args) argvNext.push_back(a.data());
