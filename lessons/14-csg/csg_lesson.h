@@ -1,0 +1,97 @@
+// Lesson 14's parts: the scene as the lesson keeps it, and the lesson itself. main.cpp defines the
+// algorithms, in the papers' order (the demo's two solids, Goldfeather, layered Goldfeather, SCS);
+// drawing.cpp the work buffer and the draws they share; classroom.cpp what surrounds them (the
+// lesson's own scenes, cameras, options and variants); oracle.cpp the check against the CSG ray
+// cast. None of the last two changes what a pixel shows.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "geometry/csg.h"
+#include "geometry/scene.h"
+#include "gl/gpu_mesh.h"
+#include "gl/lesson.h"
+#include "gl/shader.h"
+
+namespace stencil::csg_lesson {
+
+// The two-solid method's operations (the "op" option), and the methods.
+constexpr int kUnion = 0, kIntersection = 1, kAMinusB = 2, kBMinusA = 3;
+constexpr int kTwoSolids = 0, kGoldfeather = 1, kLayered = 2, kScs = 3;
+// The two-solid method's stencil: bit 0 the count's parity, bits 7 and 6 where A's and B's
+// surfaces were kept (the primitive each pixel shows).
+constexpr GLuint kParity = 0x01, kKeptA = 0x80, kKeptB = 0x40;
+inline const glm::vec4 kBackground(0.1f, 0.1f, 0.13f, 1.0f);
+
+// A CSG scene: named primitives (closed, outward-wound meshes) and an expression over them.
+struct Primitive {
+  std::string name;
+  Mesh mesh;
+  glm::mat4 model;
+  glm::vec3 colour;
+};
+struct CsgScene {
+  std::vector<Primitive> primitives;
+  std::string expression;
+  float spinDegPerSecond = 15.0f;  // the whole solid turns about +y
+};
+
+class Csg final : public Lesson {
+ public:
+  explicit Csg(const Scene* fromFile);
+  ~Csg() override;
+  void render(Frame& f) override;
+
+ private:
+  // Each defined with its comment.
+  // ---- main.cpp: the algorithms ------------------------------------------------------------------
+  void keepSurface(Frame& f, int x, GLenum faces, int s, bool wantInside, GLuint kept, bool trim);
+  void twoSolidsMethod(Frame& f, const CsgScene&, int op);
+  void goldfeather(Frame& f, const SumOfProducts& sop, bool layered);
+  bool trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targets,
+                 const std::vector<int>& trimmers, int layer);
+  void mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets);
+  int productDepthComplexity(Frame& f, const CsgProduct& p);
+  void scs(Frame& f, const SumOfProducts& sop);
+  void clipByIntersection(Frame& f, const CsgProduct& p);
+
+  // ---- drawing.cpp: the work buffer and the draws ------------------------------------------------
+  void workBuffer(glm::ivec2 size);
+  CsgTree prepare(const CsgScene& scene, double time);
+  static bool subtracted(const CsgProduct& p, int primitive);
+  enum class Paint { Depth, Lit, Merged };
+  void drawTargets(const CsgProduct& p, const std::vector<int>& targets, Paint paint);
+  void setLighting(const Program& p, const Frame& f) const;
+  void drawDepth(int i);
+  void drawShaded(int i);
+  void drawMerged(int i);
+  void drawQuad(const glm::vec4& colour, float depth);
+  // Back to the far plane, the background's colour where colour is written.
+  void farQuad() { drawQuad(kBackground, 1.0f); }
+
+  // ---- oracle.cpp: the test hook -----------------------------------------------------------------
+  void checkAgainstRayCast(Frame& f, const CsgScene& scene, const CsgTree& tree, int method) const;
+
+  const Scene* fromFile_;  // --scene's file, or nullptr for the lesson's own scenes
+  Program light_, depthOnly_, merge_, flat_;
+  Mesh quadMesh_;
+  GpuMesh quad_;
+  std::vector<std::unique_ptr<GpuMesh>> meshes_;
+  std::vector<glm::vec3> colours_;
+  std::vector<glm::mat4> models_;
+  std::string preparedFor_;
+  GLuint work_ = 0, workDepth_ = 0, workColour_ = 0;
+  glm::ivec2 workSize_{0};
+};
+
+// ---- classroom.cpp ------------------------------------------------------------------------------
+
+// The scene the options (or --scene's file) ask for, at the frame's time. Throws UsageError for
+// a scene file with method 0.
+CsgScene sceneFor(const Frame&, const Scene* fromFile);
+
+// The lesson's name, options, variants (with their cameras) and passes.
+LessonInfo lessonInfo();
+
+}  // namespace stencil::csg_lesson

@@ -1,0 +1,133 @@
+// Lesson 14's work buffer and draws: the scene's meshes on the GPU, the target faces of a product,
+// the full-screen quads that push pixels to the far plane.
+#include <algorithm>
+#include <glm/gtc/matrix_transform.hpp>
+#include <stdexcept>
+
+#include "csg_lesson.h"
+#include "geometry/shapes.h"
+#include "gl/errors.h"
+
+namespace stencil::csg_lesson {
+
+Csg::Csg(const Scene* fromFile)
+    : fromFile_(fromFile),
+      light_("common/light.vert", "common/light.frag"),
+      depthOnly_("common/light.vert", "common/flat.frag"),
+      merge_("common/light.vert", "14-csg/merge.frag"),
+      flat_("common/flat.vert", "common/flat.frag"),
+      quadMesh_(makeScreenQuad()),
+      quad_(quadMesh_) {
+  if (fromFile_ && fromFile_->csg.empty())
+    throw UsageError(fromFile_->file.string() +
+                     ": the scene has no csg line; lesson 14 renders a CSG expression over the objects");
+}
+
+Csg::~Csg() {
+  if (work_) glDeleteFramebuffers(1, &work_);
+  if (workDepth_) glDeleteTextures(1, &workDepth_);
+  if (workColour_) glDeleteRenderbuffers(1, &workColour_);
+}
+
+// The work buffer: a depth and stencil texture the size of the frame (the merge reads the
+// depth), and a colour the passes paint the surface into for the pass stepper.
+void Csg::workBuffer(glm::ivec2 size) {
+  if (work_ && workSize_ == size) return;
+  if (!work_) {
+    glGenFramebuffers(1, &work_);
+    glGenTextures(1, &workDepth_);
+    glGenRenderbuffers(1, &workColour_);
+  }
+  workSize_ = size;
+  glBindTexture(GL_TEXTURE_2D, workDepth_);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH32F_STENCIL8, size.x, size.y, 0, GL_DEPTH_STENCIL,
+               GL_FLOAT_32_UNSIGNED_INT_24_8_REV, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glBindRenderbuffer(GL_RENDERBUFFER, workColour_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size.x, size.y);
+  glBindRenderbuffer(GL_RENDERBUFFER, 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, work_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, workDepth_, 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, workColour_);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error("14-csg: the work buffer is incomplete");
+}
+
+// The scene's meshes on the GPU (made again only when the expression changes), its models at
+// `time` (the spin), and its expression parsed.
+CsgTree Csg::prepare(const CsgScene& scene, double time) {
+  if (scene.expression != preparedFor_) {
+    meshes_.clear();
+    colours_.clear();
+    for (const Primitive& p : scene.primitives) {
+      meshes_.push_back(std::make_unique<GpuMesh>(p.mesh));
+      colours_.push_back(p.colour);
+    }
+    preparedFor_ = scene.expression;
+  }
+  models_.clear();
+  const glm::mat4 spin = glm::rotate(
+      glm::mat4(1.0f), glm::radians(scene.spinDegPerSecond * static_cast<float>(time)), {0, 1, 0});
+  for (const Primitive& p : scene.primitives) models_.push_back(spin * p.model);
+  std::vector<std::string> names;
+  for (const Primitive& p : scene.primitives) names.push_back(p.name);
+  return parseCsg(scene.expression, names);
+}
+
+bool Csg::subtracted(const CsgProduct& p, int primitive) {
+  return std::binary_search(p.subtracted.begin(), p.subtracted.end(), primitive);
+}
+
+// Draws the target faces of `targets` in the product: front faces of the intersected ones,
+// back faces of the subtracted ones; in white (Depth: for the depth and stencil alone), lit, or
+// lit where the work depth says the fragment is the product's surface (Merged).
+void Csg::drawTargets(const CsgProduct& p, const std::vector<int>& targets, Paint paint) {
+  for (int x : targets) {
+    glCullFace(subtracted(p, x) ? GL_FRONT : GL_BACK);
+    if (paint == Paint::Merged)
+      drawMerged(x);
+    else if (paint == Paint::Lit)
+      drawShaded(x);
+    else
+      drawDepth(x);
+  }
+}
+
+void Csg::setLighting(const Program& p, const Frame& f) const {
+  p.set("ambient", glm::vec3(0.25f));
+  p.set("light", glm::vec4(3.0f, 6.0f, 4.0f, 1.0f));
+  p.set("lightColour", glm::vec3(1.0f));
+  p.set("eye", f.eye);
+  p.set("shininess", 24.0f);
+}
+
+void Csg::drawDepth(int i) {
+  depthOnly_.set("model", models_[static_cast<std::size_t>(i)]);
+  depthOnly_.set("colour", glm::vec4(1.0f));
+  meshes_[static_cast<std::size_t>(i)]->draw();
+}
+void Csg::drawShaded(int i) {
+  light_.set("model", models_[static_cast<std::size_t>(i)]);
+  light_.set("colour", colours_[static_cast<std::size_t>(i)]);
+  meshes_[static_cast<std::size_t>(i)]->draw();
+}
+void Csg::drawMerged(int i) {
+  merge_.set("model", models_[static_cast<std::size_t>(i)]);
+  merge_.set("colour", colours_[static_cast<std::size_t>(i)]);
+  meshes_[static_cast<std::size_t>(i)]->draw();
+}
+
+// A full-screen quad at window depth `depth` (0 near, 1 far).
+void Csg::drawQuad(const glm::vec4& colour, float depth) {
+  flat_.set("transform", glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 2.0f * depth - 1.0f)));
+  flat_.set("colour", colour);
+  const bool culling = glIsEnabled(GL_CULL_FACE);
+  glDisable(GL_CULL_FACE);  // the quad covers every pixel whichever faces are being culled
+  quad_.draw();
+  if (culling) glEnable(GL_CULL_FACE);  // as the caller had it
+}
+
+}  // namespace stencil::csg_lesson

@@ -1,0 +1,50 @@
+// Lesson 14's test hook: the frame's depth and the primitive its stencil records, against the CSG
+// ray cast (geometry/csg.h), reported as --stats counts oracle_*.
+#include <cstdint>
+#include <vector>
+
+#include "csg_lesson.h"
+
+namespace stencil::csg_lesson {
+
+// The frame's depth and the primitive its stencil records, against the CSG ray cast.
+void Csg::checkAgainstRayCast(Frame& f, const CsgScene& scene, const CsgTree& tree, int method) const {
+  std::vector<CsgPrimitive> primitives;
+  for (std::size_t i = 0; i < scene.primitives.size(); ++i)
+    primitives.push_back({&scene.primitives[i].mesh, models_[i]});
+  CsgImage expected = rayCastCsg(primitives, tree, f.projection * f.view, f.size);
+  // 8 stencil bits record the primitive modulo 255 (0 is none): past 254 primitives the ray
+  // cast's are compared modulo 255 too.
+  if (method != kTwoSolids)
+    for (int& e : expected.primitive)
+      if (e >= 0) e %= 255;
+  const std::size_t w = static_cast<std::size_t>(f.size.x), h = static_cast<std::size_t>(f.size.y);
+  std::vector<float> depthRows(w * h);
+  std::vector<std::uint8_t> stencilRows(w * h);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, f.framebuffer());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, f.size.x, f.size.y, GL_DEPTH_COMPONENT, GL_FLOAT, depthRows.data());
+  glReadPixels(0, 0, f.size.x, f.size.y, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencilRows.data());
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  std::vector<float> depth(w * h);
+  std::vector<int> primitive(w * h);
+  for (std::size_t i = 0; i < w * h; ++i) {
+    const std::size_t row = (h - 1 - i / w) * w + i % w;  // GL's rows bottom up, the ray cast's top down
+    depth[i] = depthRows[row];
+    const std::uint8_t s = stencilRows[row];
+    if (method == kTwoSolids)
+      primitive[i] = (s & kKeptA) ? 0 : (s & kKeptB) ? 1 : kNoSurface;
+    else
+      primitive[i] = s == 0 ? kNoSurface : s - 1;
+  }
+  // Depth in window units: the fixed-point buffer's steps are 2^-24; the tolerance allows for
+  // the rasterizer's interpolation against the exact intersection.
+  const CsgReport r = compareCsg(expected, depth, primitive, 1e-4f);
+  f.count("oracle_pixels", r.pixels);
+  f.count("oracle_primitive_disagreements", r.primitiveDisagreements);
+  f.count("oracle_depth_disagreements", r.depthDisagreements);
+  f.count("oracle_on_edges", r.onEdges);
+  f.count("oracle_largest_depth_error_1e9", static_cast<std::uint64_t>(r.largestDepthError * 1e9f));
+}
+
+}  // namespace stencil::csg_lesson
