@@ -422,7 +422,10 @@ int main(int argc, char** argv) {
                                       {"pipe"},    {"concave", true}, {"cuberack", false, true}};
   // The first frames pay for set-up (llvmpipe compiles a shader variant at a state's first use,
   // over the first few frames): left out of both sides' medians.
-  const int warmup = quick ? 2 : 3, frames = quick ? 3 : 7, rounds = quick ? 1 : 3;
+  const int warmup = 2, frames = quick ? 3 : 5, rounds = quick ? 1 : 3;
+  // A measurement whose first round's median is longer than this is not repeated: its rounds'
+  // spread is a small part of it, and the run stays within minutes.
+  constexpr double kRepeatBelowMs = 400.0;
   const std::vector<OpenCsgSetting> settings = {
       {"goldfeather", OpenCSG::Goldfeather, OpenCSG::NoDepthComplexitySampling, false},
       {"goldfeather+dc", OpenCSG::Goldfeather, OpenCSG::DepthComplexitySampling, false},
@@ -438,6 +441,7 @@ int main(int argc, char** argv) {
       {"layered", "--set method=2"},
       {"layered+queries", "--set method=2 --set queries=1"},
       {"scs", "--set method=3", true, true},
+      {"automatic", "--set method=4"},
   };
   const fs::path sceneDir = fs::path(SOURCE_DIR) / "tests/scenes/opencsg";
 
@@ -484,6 +488,7 @@ int main(int argc, char** argv) {
       for (int round = 0; round < rounds; ++round) {
         for (std::size_t r = 0; r < sceneRows.size(); ++r) {
           Row& row = sceneRows[r];
+          if (round > 0 && row.roundMedians.front() > kRepeatBelowMs) continue;
           if (rowSetting[r]) {
             std::vector<double> ms;
             for (int f = 0; f < warmup + frames; ++f) {
@@ -572,7 +577,8 @@ int main(int argc, char** argv) {
   std::ostringstream md;
   md << "Measured " << date << " by `csg_opencsg_benchmark` (" << (quick ? "quick: " : "") << frames
      << " frames a measurement after " << warmup << " left out, the median; " << rounds
-     << (rounds == 1 ? " round" : " rounds") << " alternating, the median of their medians) on " << cpu << " ("
+     << (rounds == 1 ? " round" : " rounds") << " alternating, the median of their medians; one round where the first"
+     << " took over " << kRepeatBelowMs << " ms) on " << cpu << " ("
      << cores << " cores, shared), " << u.sysname << " " << u.release << "; load average " << load
      << " (1, 5, 15 min) at the end. " << OPENCSG_VERSION_STRING << " on " << glx.renderer
      << " (GLX pbuffer); lesson 14 on " << lessonRenderer
@@ -618,7 +624,16 @@ int main(int argc, char** argv) {
   std::cerr << "bench: wrote " << out.string() << ".csv and .md; load average " << load << "\n";
 
   if (page) {
+    // Read again: the page may have been edited during the run (markers checked at the start).
+    std::ifstream in(*page);
+    std::stringstream again;
+    again << in.rdbuf();
+    pageText = again.str();
     const auto b = pageText.find(beginMarker), e = pageText.find(endMarker);
+    if (b == std::string::npos || e == std::string::npos || e < b) {
+      std::cerr << "csg_opencsg_benchmark: --page " << page->string() << ": its markers went during the run\n";
+      return 1;
+    }
     pageText.replace(b + beginMarker.size(), e - b - beginMarker.size(), md.str());
     const fs::path temporary = page->string() + ".new";
     std::ofstream(temporary) << pageText;
