@@ -143,6 +143,8 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
       cl.passesDir = value();
     else if (flag == "--stats")
       cl.stats = true;
+    else if (flag == "--stats-frames")
+      cl.stats = cl.statsFrames = true;
     else if (flag == "--golden")
       cl.golden = value();
     else if (flag == "--oracle")
@@ -316,6 +318,10 @@ std::string helpText(const LessonInfo& info, const std::string& program, bool re
       << "                           has no query for it; a GPU time null where it cannot be right,\n"
       << "                           longer than the pass's CPU time or from a timer without bits,\n"
       << "                           with gpu_ms_null_reason), the lesson's own counts\n"
+      << "  --stats-frames           --stats without the per-pass queries and glFinish: each frame\n"
+      << "                           timed alone, one glFinish at its end (frame_ms, with every\n"
+      << "                           frame's time in frame_ms.all; draw calls and triangles still\n"
+      << "                           counted, samples and GPU times null)\n"
       << "  --quiet                  no context line on stderr\n";
   if (readsScenes && info.shadows)
     out << "  --mask-out DIR           each light's shadow mask as DIR/light-<i>.png (i from 0): the\n"

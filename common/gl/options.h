@@ -35,6 +35,7 @@ struct CommandLine {
   int stencilBits = 8;            // --stencil-bits 0 builds a framebuffer without stencil
   bool stencilBitPlanes = false;  // --stencil-view bits
   bool stats = false;
+  bool statsFrames = false;  // --stats frames: no per-pass queries, one glFinish a frame
   bool updateGolden = false;
   bool quiet = false;
   // The window (ignored headless). The next lesson of the course opens with these set to what the

@@ -18,7 +18,7 @@ namespace stencil::csg_lesson {
 
 // The two-solid method's operations (the "op" option), and the methods.
 constexpr int kUnion = 0, kIntersection = 1, kAMinusB = 2, kBMinusA = 3;
-constexpr int kTwoSolids = 0, kGoldfeather = 1, kLayered = 2, kScs = 3;
+constexpr int kTwoSolids = 0, kGoldfeather = 1, kLayered = 2, kScs = 3, kAutomatic = 4;
 // The two-solid method's stencil: bit 0 the count's parity, bits 7 and 6 where A's and B's
 // surfaces were kept (the primitive each pixel shows).
 constexpr GLuint kParity = 0x01, kKeptA = 0x80, kKeptB = 0x40;
@@ -54,7 +54,16 @@ class Csg final : public Lesson {
   void mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets);
   int targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<int>& targets);
   void scs(Frame& f, const SumOfProducts& sop);
+  void scsEnter(Frame& f, const CsgProduct& p);
+  void scsSubtract(Frame& f, int s, GLuint query = 0, bool clean = false);
+  bool reachesPastFar(const Frame& f, int i) const;
   void clipByIntersection(Frame& f, const CsgProduct& p);
+
+  // ---- automatic.cpp: per product the method that is right for it, with OpenCSG's economies ------
+  void automatic(Frame& f, const SumOfProducts& sop);
+  void scsUntilUnchanged(Frame& f, const CsgProduct& p);
+  void classifyPrimitives(const CsgScene& scene);
+  bool scissorTo(const Frame& f, int i) const;
 
   // ---- drawing.cpp: the work buffer and the draws ------------------------------------------------
   void workBuffer(glm::ivec2 size);
@@ -83,6 +92,11 @@ class Csg final : public Lesson {
   std::vector<bool> convex_;  // per primitive, from its mesh (isConvex)
   std::vector<glm::mat4> models_;
   std::string preparedFor_;
+  // automatic.cpp: per primitive, whether its mesh is convex and its object-space bounding box
+  // (for the scene prepare() made, classifiedFor_).
+  std::vector<bool> convex_;
+  std::vector<std::pair<glm::vec3, glm::vec3>> boxes_;
+  std::string classifiedFor_;
   GLuint work_ = 0, workDepth_ = 0, workColour_ = 0;
   glm::ivec2 workSize_{0};
   bool mirroredView_ = false;  // this frame's view matrix has a negative determinant
