@@ -62,7 +62,6 @@ class Csg final : public Lesson {
   // ---- automatic.cpp: per product the method that is right for it, with OpenCSG's economies ------
   void automatic(Frame& f, const SumOfProducts& sop);
   void scsUntilUnchanged(Frame& f, const CsgProduct& p);
-  void classifyPrimitives(const CsgScene& scene);
   bool scissorTo(const Frame& f, int i) const;
 
   // ---- drawing.cpp: the work buffer and the draws ------------------------------------------------
@@ -92,11 +91,7 @@ class Csg final : public Lesson {
   std::vector<bool> convex_;  // per primitive, from its mesh (isConvex)
   std::vector<glm::mat4> models_;
   std::string preparedFor_;
-  // automatic.cpp: per primitive, whether its mesh is convex and its object-space bounding box
-  // (for the scene prepare() made, classifiedFor_).
-  std::vector<bool> convex_;
-  std::vector<std::pair<glm::vec3, glm::vec3>> boxes_;
-  std::string classifiedFor_;
+  std::vector<std::pair<glm::vec3, glm::vec3>> boxes_;  // per primitive, its object-space bounding box
   GLuint work_ = 0, workDepth_ = 0, workColour_ = 0;
   glm::ivec2 workSize_{0};
   bool mirroredView_ = false;  // this frame's view matrix has a negative determinant
