@@ -31,6 +31,8 @@ struct Option {
   int value = 0;
   int max = 1;
   int min = 0;
+
+  bool operator==(const Option&) const = default;
 };
 
 // The options a run starts with, as LessonInfo::refuseOptions sees them before a context is made:

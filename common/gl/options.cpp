@@ -322,7 +322,7 @@ std::string helpText(const LessonInfo& info, const std::string& program, bool re
       << "                           timed alone, one glFinish at its end (frame_ms, with every\n"
       << "                           frame's time in frame_ms.all; draw calls and triangles still\n"
       << "                           counted, samples and GPU times null)\n"
-      << "  --quiet                  no context line on stderr\n";
+      << "  --quiet                  no context line, no key or progress lines on stderr (errors still)\n";
   if (readsScenes && info.shadows)
     out << "  --mask-out DIR           each light's shadow mask as DIR/light-<i>.png (i from 0): the\n"
         << "                           stencil once that light's shadow is in it, white where it is 0\n"

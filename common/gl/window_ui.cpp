@@ -128,7 +128,7 @@ void goToLesson(GLFWwindow* w, WindowState& st, int index) {
     return;
   }
   st.session.nextLesson = st.course[static_cast<std::size_t>(index)];
-  say(st, "next: " + st.session.nextLesson->filename().string());
+  say(st, (index > st.lessonIndex ? "next: " : "previous: ") + st.session.nextLesson->filename().string());
   glfwSetWindowShouldClose(w, GLFW_TRUE);
 }
 
@@ -591,6 +591,10 @@ int runWindow(Session& s) {
   {
     Display display;
     double last = glfwGetTime();
+    // The variant and options of the last frame drawn: a change the lesson refuses (lesson 14's
+    // method 0 with a scene file, say) is said in one line and undone, and the window goes on.
+    std::string drawnVariant = s.variant;
+    std::vector<Option> drawnOptions = s.options;
     for (int frame = 0; !glfwWindowShouldClose(window); ++frame) {
       glfwPollEvents();
       if (st.scaleChanged) {
@@ -636,9 +640,20 @@ int runWindow(Session& s) {
       const int step = st.passStep;
       s.uiScale = st.uiScale;
       s.saveShadowMasks = cl.frames && frame + 1 >= *cl.frames;  // --mask-out: the last frame, as headless
-      s.renderFrame(st.time, {.measure = false,
-                              .captureAll = false,
-                              .captureOnly = step >= 0 ? std::optional<std::size_t>(step) : std::nullopt});
+      const FrameRequest request{.measure = false,
+                                 .captureAll = false,
+                                 .captureOnly = step >= 0 ? std::optional<std::size_t>(step) : std::nullopt};
+      try {
+        s.renderFrame(st.time, request);
+      } catch (const UsageError& e) {
+        if (s.variant == drawnVariant && s.options == drawnOptions) throw;  // nothing to undo
+        std::cerr << s.info.id << ": " << e.what() << " (kept variant " << drawnVariant << " and its settings)\n";
+        if (s.variant != drawnVariant) s.setVariant(drawnVariant);
+        s.options = drawnOptions;
+        s.renderFrame(st.time, request);
+      }
+      drawnVariant = s.variant;
+      drawnOptions = s.options;
       const Snapshot* snap = nullptr;
       if (step >= 0)
         for (const Snapshot& sn : s.recorder->snapshots()) snap = &sn;
