@@ -302,6 +302,7 @@ LessonInfo lessonInfo() {
        {{"method", kGoldfeather}, {"scene", 4}}},
       {"layered-grid", "the box minus 25 spheres, layered", {{"method", kLayered}, {"scene", 4}}},
   };
+  info.reversedDepth = true;  // a float depth buffer, reversed, where the driver has clip control
   info.passes = {"surface", "count",  "keep",      "far",      "layers",
                  "select",  "parity", "intersect", "subtract", "merge"};
   info.camera.target = {0.2f, 0.2f, 0.2f};
