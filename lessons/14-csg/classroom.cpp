@@ -289,7 +289,7 @@ LessonInfo lessonInfo() {
        "SCS on the box minus 25 spheres: a sequence of 25 * 24 + 1 = 601 subtractions",
        {{"method", kScs}, {"scene", 4}}},
       {"coincident",
-       "A - B where B's top face lies in A's: z-fighting decides pixel by pixel",
+       "A - B where B's top face lies in A's: tied depths, and a face at the surface's depth is not behind it",
        {{"method", kGoldfeather}, {"scene", 5}}},
       {"coincident-grown",
        "the same with B 0.01 taller: a clean pocket",
