@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian/Ubuntu packages the project builds and tests with, if any are
 # missing: with apt-get as root, with sudo if it needs no password, otherwise it prints
-# the exact command and stops.
+# the exact command and stops. With --opencsg it adds the packages lesson 14's benchmark beside
+# OpenCSG needs (tests/bench/csg_opencsg_benchmark.cpp); the default build does without them.
 set -euo pipefail
 
 packages=(
@@ -19,6 +20,9 @@ packages=(
   xvfb xauth xdotool                 # the window tests run under a virtual display and press keys
 )
 optional=(libosmesa6-dev)            # newer Mesa releases dropped OSMesa; EGL then serves
+if [ "${1:-}" = "--opencsg" ]; then
+  packages+=(libopencsg-dev libglew-dev libx11-dev libgl-dev)  # OpenCSG 1.5 draws through GLEW on GLX
+fi
 
 installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
 

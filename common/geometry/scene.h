@@ -36,7 +36,7 @@ struct SceneError : std::runtime_error {
 // What a scene file may ask for (docs/scenes.md). The lessons are for teaching: a file beyond
 // these is refused at the line that crosses them, rather than run for minutes without a word.
 inline constexpr std::size_t kMaxSceneLights = 16;
-inline constexpr std::size_t kMaxSceneObjects = 256;
+inline constexpr std::size_t kMaxSceneObjects = 1024;
 inline constexpr std::size_t kMaxSceneTriangles = 1'000'000;  // all objects together
 inline constexpr std::uintmax_t kMaxSceneFileBytes = 1u << 20;
 inline constexpr std::uintmax_t kMaxObjFileBytes = 64u << 20;

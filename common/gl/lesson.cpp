@@ -251,10 +251,20 @@ std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
   const auto steadyBegin = frameMs.size() > 1 ? frameMs.begin() + 1 : frameMs.begin();
   const double mean =
       std::accumulate(steadyBegin, frameMs.end(), 0.0) / static_cast<double>(frameMs.end() - steadyBegin);
+  std::vector<double> steady(steadyBegin, frameMs.end());
+  std::sort(steady.begin(), steady.end());
+  const std::size_t half = steady.size() / 2;
+  const double median = steady.size() % 2 ? steady[half] : 0.5 * (steady[half - 1] + steady[half]);
   out["frame_ms"] = {{"first", milliseconds(frameMs.front())},
                      {"mean", milliseconds(mean)},
+                     {"median", milliseconds(median)},
                      {"min", milliseconds(*std::min_element(steadyBegin, frameMs.end()))},
                      {"max", milliseconds(*std::max_element(steadyBegin, frameMs.end()))}};
+  if (s.commandLine.statsFrames) {  // every frame, the first too, for a caller's own warm-up rule
+    nlohmann::ordered_json all = nlohmann::ordered_json::array();
+    for (double ms : frameMs) all.push_back(milliseconds(ms));
+    out["frame_ms"]["all"] = all;
+  }
   return out.dump(2) + "\n";
 }
 
@@ -412,7 +422,7 @@ int runHeadless(Session& s) {
   for (int i = 0; i < frames; ++i) {
     const bool last = i + 1 == frames;
     FrameRequest request{
-        .measure = cl.stats, .captureAll = last && cl.passesDir.has_value(), .captureOnly = {}};
+        .measure = cl.stats && !cl.statsFrames, .captureAll = last && cl.passesDir.has_value(), .captureOnly = {}};
     s.saveShadowMasks = last;
     const auto start = std::chrono::steady_clock::now();
     {
@@ -694,12 +704,14 @@ int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, 
     if (choice.backend != Backend::Window) return runHeadless(*session);
     const int code = runWindow(*session);
     const std::optional<std::filesystem::path> next = session->nextLesson;
+    const std::vector<std::string> windowFlags = session->nextLessonFlags;
     session.reset();  // the window closes before the next lesson opens its own
     if (next) {
-      // The next lesson in the window, at this one's size; --quiet carries over.
-      const std::string exe = next->string(),
-                        size = std::to_string(cl.width) + "x" + std::to_string(cl.height);
-      std::vector<std::string> args = {exe, "--backend", "window", "--size", size};
+      // The next lesson in the window as this one left it (size, place, UI scale, view, panel);
+      // --quiet carries over.
+      const std::string exe = next->string();
+      std::vector<std::string> args = {exe, "--backend", "window"};
+      args.insert(args.end(), windowFlags.begin(), windowFlags.end());
       if (cl.quiet) args.push_back("--quiet");
       std::vector<char*> argvNext;
       for (std::string& a : args) argvNext.push_back(a.data());

@@ -125,6 +125,9 @@ struct LessonInfo {
   // reversedDepth on Frame::projection). Without clip control the run says so once and falls back
   // to the 24-bit fixed-point buffer with GL's default mapping. Off: a 24-bit buffer, as always.
   bool reversedDepth = false;
+  // Whether the lesson reads Frame::pointer (a brush the right mouse button drags): the window
+  // gives the right-drag hint only then.
+  bool brush = false;
   // Refuses options that contradict each other or the scene file (exit 2, before anything is
   // drawn): returns why in one line, or an empty string. Unset: every combination draws.
   std::function<std::string(const OptionsChosen&)> refuseOptions;
@@ -193,6 +196,8 @@ class Frame {
   // under the pointer (x right, y up from the bottom left corner, in pixels). Empty otherwise, and
   // always in headless runs. Lessons that paint (lesson 12's brush) read it; others ignore it.
   std::optional<glm::vec2> pointer;
+  // The window's UI scale (1 headless): a lesson's overlay text (lesson 13's legend) grows with it.
+  float uiScale = 1.0f;
 
  private:
   const std::vector<Option>& options_;

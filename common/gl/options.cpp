@@ -143,6 +143,8 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
       cl.passesDir = value();
     else if (flag == "--stats")
       cl.stats = true;
+    else if (flag == "--stats-frames")
+      cl.stats = cl.statsFrames = true;
     else if (flag == "--golden")
       cl.golden = value();
     else if (flag == "--oracle")
@@ -191,6 +193,30 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
     else if (flag == "--stencil-bits") {
       cl.stencilBits = parseNumber<int>(flag, value());
       if (cl.stencilBits != 0 && cl.stencilBits != 8) throw UsageError("--stencil-bits takes 8 or 0");
+    } else if (flag == "--ui-scale") {
+      const std::string v = value();
+      const float scale = parseNumber<float>(flag, v);
+      if (scale < kMinUiScale || scale > kMaxUiScale)
+        throw UsageError("--ui-scale must be between 0.5 and 4, got '" + v + "'");
+      cl.uiScale = scale;
+    } else if (flag == "--position") {
+      const std::string s = value();
+      const auto comma = s.find(',');
+      if (comma == std::string::npos) throw UsageError("--position expects X,Y, got '" + s + "'");
+      const int x = parseNumber<int>(flag, s.substr(0, comma)), y = parseNumber<int>(flag, s.substr(comma + 1));
+      if (std::abs(x) > 65536 || std::abs(y) > 65536)
+        throw UsageError("--position must be within -65536..65536 each way, got '" + s + "'");
+      cl.position = std::pair{x, y};
+    } else if (flag == "--view") {
+      const std::string v = value();
+      const auto* it = std::find(std::begin(kViewNames), std::end(kViewNames), v);
+      if (it == std::end(kViewNames))
+        throw UsageError("--view takes colour, stencil, grey, bits or depth, got '" + v + "'");
+      cl.view = static_cast<int>(it - std::begin(kViewNames));
+    } else if (flag == "--panel") {
+      const std::string v = value();
+      if (v != "shown" && v != "hidden") throw UsageError("--panel takes shown or hidden, got '" + v + "'");
+      cl.panelHidden = v == "hidden";
     } else if (flag == "--quiet" || flag == "-q")
       cl.quiet = true;
     else
@@ -256,6 +282,12 @@ std::string helpText(const LessonInfo& info, const std::string& program, bool re
       << "  --shader-dir DIR         look for shaders here instead of the source tree\n"
       << "                           ($STENCIL_SHADER_DIR does the same; the flag wins)\n"
       << "  --stencil-bits 8|0       0 builds a framebuffer without stencil, to see the check refuse it\n\n"
+      << "Window (ignored headless; Page Down and Page Up carry them, and --size, to the next lesson)\n"
+      << "  --ui-scale S             panel text, widgets and the stencil legend S times their size,\n"
+      << "                           0.5 to 4 (default: the monitor's content scale; 2 for a projector)\n"
+      << "  --position X,Y           the window's top left corner on the screen\n"
+      << "  --view NAME              colour | stencil | grey | bits | depth (default colour)\n"
+      << "  --panel shown|hidden     the panel beside the picture (default shown)\n\n"
       << "What to render\n"
       << "  --time T                 seconds into the animation (default 0), a finite number within\n"
       << "                           -1e6..1e6: beyond that float animation loses its precision\n"
@@ -286,6 +318,10 @@ std::string helpText(const LessonInfo& info, const std::string& program, bool re
       << "                           has no query for it; a GPU time null where it cannot be right,\n"
       << "                           longer than the pass's CPU time or from a timer without bits,\n"
       << "                           with gpu_ms_null_reason), the lesson's own counts\n"
+      << "  --stats-frames           --stats without the per-pass queries and glFinish: each frame\n"
+      << "                           timed alone, one glFinish at its end (frame_ms, with every\n"
+      << "                           frame's time in frame_ms.all; draw calls and triangles still\n"
+      << "                           counted, samples and GPU times null)\n"
       << "  --quiet                  no context line on stderr\n";
   if (readsScenes && info.shadows)
     out << "  --mask-out DIR           each light's shadow mask as DIR/light-<i>.png (i from 0): the\n"

@@ -35,9 +35,23 @@ struct CommandLine {
   int stencilBits = 8;            // --stencil-bits 0 builds a framebuffer without stencil
   bool stencilBitPlanes = false;  // --stencil-view bits
   bool stats = false;
+  bool statsFrames = false;  // --stats frames: no per-pass queries, one glFinish a frame
   bool updateGolden = false;
   bool quiet = false;
+  // The window (ignored headless). The next lesson of the course opens with these set to what the
+  // window had (Page Down, Page Up).
+  std::optional<float> uiScale;                // --ui-scale S, kMinUiScale..kMaxUiScale; else the monitor's
+  std::optional<std::pair<int, int>> position;  // --position X,Y: the window's top left, screen coordinates
+  int view = 0;                                 // --view: 0 colour, 1 stencil, 2 grey, 3 bits, 4 depth
+  bool panelHidden = false;                     // --panel hidden
 };
+
+// The window's UI scale (panel text, widgets, the stencil legend): 1 draws the panel's text 13 px
+// high. kUiScaleStep is what the + and - keys change it by.
+constexpr float kMinUiScale = 0.5f, kMaxUiScale = 4.0f, kUiScaleStep = 0.25f;
+// The window's views, in the order Tab cycles them (--view takes these names).
+constexpr const char* kViewNames[] = {"colour", "stencil", "grey", "bits", "depth"};
+constexpr int kViewCount = 5;
 
 // Throws UsageError with one line for anything it does not understand.
 CommandLine parseCommandLine(const LessonInfo&, int argc, char** argv);

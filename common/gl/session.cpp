@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <regex>
 #include <stdexcept>
@@ -19,7 +20,10 @@ namespace stencil {
 Session::Session(const LessonInfo& lessonInfo, const LessonFactory& factory, const CommandLine& cl,
                  Backend backend)
     : info(lessonInfo), commandLine(cl), camera(lessonInfo.camera) {
-  const int panel = backend == Backend::Window && !cl.frames ? kWindowPanelWidth : 0;  // beside the picture
+  // The panel beside the picture, at --ui-scale (the window fits it to the monitor's scale after).
+  const int panel = backend == Backend::Window && !cl.frames && !cl.panelHidden
+                        ? static_cast<int>(std::lround(kWindowPanelWidth * cl.uiScale.value_or(1.0f)))
+                        : 0;
   context = createContext(backend, cl.width + panel, cl.height, info.id + ": " + info.title);
   enableDebugOutput(context->features());
   checkNeeds(info.needs, "lesson " + info.id);
@@ -90,6 +94,7 @@ void Session::renderFrame(double time, FrameRequest request) {
   frame.setProgressSink(
       [this](std::string_view what, std::size_t done, std::size_t total) { progress.set(what, done, total); });
   frame.pointer = pointer;
+  frame.uiScale = uiScale;
   lesson->render(frame);
   recorder->endFrame();
   viewProjection = frame.projection * frame.view;

@@ -80,9 +80,12 @@ class Session {
   Frame::ShadowMaskWriter shadowMaskHook;  // when set, Frame::shadowMask calls it instead (--shadow-hours)
   bool reversedDepth = false;              // the variant's reversed float depth, where the driver allows it
   std::optional<glm::vec2> pointer;        // Frame::pointer for the next frame (the window sets it)
+  float uiScale = 1.0f;                    // Frame::uiScale (the window sets it)
   // The lesson program the window asked to go to (the course's next or previous lesson): once this
   // session has closed its window, the program replaces this one (execv), in a window of its own.
   std::optional<std::filesystem::path> nextLesson;
+  // The window flags it opens with (--size, --position, --ui-scale, --view, --panel): this window's.
+  std::vector<std::string> nextLessonFlags;
 
  private:
   void checkNeeds(const std::vector<Feature>&, const std::string& who) const;

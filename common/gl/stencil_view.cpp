@@ -186,28 +186,57 @@ std::array<Rgb, 256> stencilPictureColours(const std::vector<std::uint64_t>& his
   return colours;
 }
 
-Image stencilRamp(const Image& stencil) {
+Image stencilRamp(const Image& stencil, const StencilRampStyle& style) {
   std::vector<std::uint64_t> histogram(256, 0);
   for (std::uint8_t v : stencil.pixels) ++histogram[v];
   const std::array<Rgb, 256> colours = stencilPictureColours(histogram);
 
-  const int scale = 2, small = 2, entryHeight = 7 * scale + 4, swatch = 5 * scale;
-  // Lay the legend entries out first to know how tall the band is.
+  const int k = std::max(style.legendScale, 1);
+  const int scale = 2 * k, small = 2 * k, entryHeight = 7 * scale + 4 * k, swatch = 5 * scale, gap = 3 * k;
+  // Lay the legend entries out first to know how tall the band is. With a row limit, the most
+  // common values are kept (in ascending order) and the rest counted in a "+N" entry.
+  std::vector<int> shown;
+  for (int v = 0; v < 256; ++v)
+    if (histogram[static_cast<size_t>(v)] > 0) shown.push_back(v);
   struct Entry {
-    int value, x, y;
+    int value, x, y;  // value -1: the "+N" of the values left out
+  };
+  const auto entryWidth = [&](int v, int left) {
+    return v < 0 ? textWidth("+" + std::to_string(left), scale) + 10 * k
+                 : swatch + gap + textWidth(std::to_string(v), scale) + gap +
+                       textWidth("(" + std::to_string(histogram[static_cast<size_t>(v)]) + ")", small) + 10 * k;
   };
   std::vector<Entry> entries;
-  int x = 4, y = 4;
-  for (int v = 0; v < 256; ++v) {
-    const std::uint64_t n = histogram[static_cast<size_t>(v)];
-    if (n == 0) continue;
-    const int width = swatch + 3 + textWidth(std::to_string(v), scale) + 3 +
-                      textWidth("(" + std::to_string(n) + ")", small) + 10;
-    if (x + width > stencil.width && x > 4) x = 4, y += entryHeight;
-    entries.push_back({v, x, y});
-    x += width;
+  int rows = 1;
+  const auto layout = [&](const std::vector<int>& values, int left) {
+    entries.clear();
+    int x = 4 * k, y = 4 * k;
+    rows = 1;
+    std::vector<int> all = values;
+    if (left > 0) all.push_back(-1);
+    for (const int v : all) {
+      const int width = entryWidth(v, left);
+      if (x + width > stencil.width && x > 4 * k) x = 4 * k, y += entryHeight, ++rows;
+      entries.push_back({v, x, y});
+      x += width;
+    }
+  };
+  layout(shown, 0);
+  if (style.maxLegendRows > 0 && rows > style.maxLegendRows) {
+    // Drop the rarest values one at a time until the rest and their "+N" fit.
+    std::vector<int> byCount = shown;
+    std::stable_sort(byCount.begin(), byCount.end(), [&](int a, int b) {
+      return histogram[static_cast<size_t>(a)] > histogram[static_cast<size_t>(b)];
+    });
+    while (!byCount.empty()) {
+      byCount.pop_back();
+      std::vector<int> kept = byCount;
+      std::sort(kept.begin(), kept.end());
+      layout(kept, static_cast<int>(shown.size() - kept.size()));
+      if (rows <= style.maxLegendRows) break;
+    }
   }
-  const int band = y + entryHeight;
+  const int band = style.legend ? entries.back().y + entryHeight : 0;
 
   Image out(stencil.width, stencil.height + band, 4);
   for (int py = 0; py < stencil.height; ++py)
@@ -224,15 +253,20 @@ Image stencilRamp(const Image& stencil) {
           if (rx >= 0 && ry >= 0 && rx < stencil.width && ry < stencil.height && *stencil.at(rx, ry) != v)
             fillRect(out, rx, ry, 1, 1, colours[v]);
     }
+  if (!style.legend) return out;
   fillRect(out, 0, stencil.height, out.width, band, {48, 48, 48});
   for (const Entry& e : entries) {
     const int top = stencil.height + e.y;
+    if (e.value < 0) {
+      drawText(out, e.x, top, "+" + std::to_string(shown.size() + 1 - entries.size()), scale, {255, 255, 255});
+      continue;
+    }
     fillRect(out, e.x - 1, top - 1, swatch + 2, swatch + 2, {200, 200, 200});  // outline: 0 is black
     fillRect(out, e.x, top, swatch, swatch, colours[static_cast<std::size_t>(e.value)]);
-    const int numberX = e.x + swatch + 3;
+    const int numberX = e.x + swatch + gap;
     drawNumber(out, numberX, top, e.value, scale, {255, 255, 255});
     const std::string n = "(" + std::to_string(histogram[static_cast<std::size_t>(e.value)]) + ")";
-    drawText(out, numberX + textWidth(std::to_string(e.value), scale) + 3, top + 5 * scale - 5 * small, n,
+    drawText(out, numberX + textWidth(std::to_string(e.value), scale) + gap, top + 5 * scale - 5 * small, n,
              small, {170, 170, 170});
   }
   return out;
@@ -265,9 +299,9 @@ float luminance(const Rgb& c) {
 }
 
 Image countLegend(const std::vector<std::uint64_t>& histogram, int top, bool saturated, int width,
-                  const std::function<std::string(int)>& label) {
+                  const std::function<std::string(int)>& label, int textScale) {
   top = std::max(top, 1);
-  const int scale = width >= 480 ? 2 : 1, margin = 3 * scale, barHeight = 16 * scale, strip = 4 * scale,
+  const int scale = textScale > 0 ? textScale : width >= 480 ? 2 : 1, margin = 3 * scale, barHeight = 16 * scale, strip = 4 * scale,
             text = 5 * scale;
   const int height = margin + barHeight + strip + 2 * scale + text + margin;
   Image out(std::max(width, 1), height, 4);
@@ -325,8 +359,10 @@ Image countLegend(const std::vector<std::uint64_t>& histogram, int top, bool sat
   return out;
 }
 
-Image countLegend(const std::vector<std::uint64_t>& histogram, int top, bool saturated, int width) {
-  return countLegend(histogram, top, saturated, width, [](int k) { return std::to_string(k); });
+Image countLegend(const std::vector<std::uint64_t>& histogram, int top, bool saturated, int width,
+                  int textScale) {
+  return countLegend(
+      histogram, top, saturated, width, [](int k) { return std::to_string(k); }, textScale);
 }
 
 Image countPicture(const Image& stencil, bool saturates) {

@@ -36,7 +36,16 @@ std::array<std::array<std::uint8_t, 3>, 256> stencilPictureColours(
 // in ascending order, a swatch, the value and (in brackets, grey) its pixel count. A value held by
 // fewer than kRarePixels pixels is pointed at: a ring in its colour around each of its pixels.
 constexpr std::uint64_t kRarePixels = 16;
-Image stencilRamp(const Image& stencil);
+// How the window draws it (the defaults are the headless pictures'): the legend's digits and
+// swatches legendScale times their size; at most maxLegendRows rows of entries (0: as many as
+// the values need), the most common values kept and the others counted as "+N" at the end; or no
+// legend band at all (the window's panel lists the values instead).
+struct StencilRampStyle {
+  int legendScale = 1;
+  int maxLegendRows = 0;
+  bool legend = true;
+};
+Image stencilRamp(const Image& stencil, const StencilRampStyle& style = {});
 
 // The eight bit planes side by side (4 x 2 tiles, bit 0 top left): white where set, each tile
 // labelled with its bit in digits 1/64 of the tile's width wide (at least 2 pixels a dot).
@@ -57,10 +66,13 @@ float luminance(const std::array<std::uint8_t, 3>&);
 // tallest the most common count, the counts written under the columns (as many as fit,
 // 0 and top always), and, when `saturated` is set, a cyan column apart labelled "255+" with its own
 // bar (histogram[255]). top is the largest count in the ramp; histogram has 256 entries or fewer.
-Image countLegend(const std::vector<std::uint64_t>& histogram, int top, bool saturated, int width);
+// Its digits are 1 pixel a dot below 480 pixels wide, else 2; textScale > 0 gives the pixels a dot
+// (the window's UI scale).
+Image countLegend(const std::vector<std::uint64_t>& histogram, int top, bool saturated, int width,
+                  int textScale = 0);
 // The same with each column's label given: label(k) for count k (digits, '+', '.' and 'h').
 Image countLegend(const std::vector<std::uint64_t>& histogram, int top, bool saturated, int width,
-                  const std::function<std::string(int)>& label);
+                  const std::function<std::string(int)>& label, int textScale = 0);
 
 // A stencil of counts as a picture: each value in countColour (255 in cyan when `saturates`), the
 // ramp's top the largest value present (other than a saturated 255), and countLegend below.

@@ -16,12 +16,14 @@ inline constexpr WindowKey kWindowKeys[] = {
     {"R", "reset the camera"},
     {"V", "next variant"},
     {"P, shift+P", "step forward, back through the passes"},
-    {"Tab", "cycle the colour, stencil, bit-plane and depth views (depth as --depth-out draws it)"},
+    {"Tab", "cycle the colour, stencil, grey (stencil as grey levels), bit-plane and depth views"},
     {"Space", "pause"},
     {"S, shift+S", "save a screenshot of the picture, of the whole window with the panel"},
     {"PgDn, PgUp", "next, previous lesson (in the course lessons/run opens)"},
     {"F1", "hide or show the panel"},
-    {"Esc", "quit"},
+    {"+, -", "larger, smaller UI scale (text, widgets, stencil legend)"},
+    {"F2", "print the frame rate"},
+    {"Esc", "quit (while a typed slider value is edited: end the edit)"},
 };
 
 }  // namespace stencil

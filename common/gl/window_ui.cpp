@@ -9,20 +9,26 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <string>
 
 #include "gl/errors.h"
+#include "gl/frame_rate.h"
+#include "gl/options.h"
 #include "gl/session.h"
 #include "gl/stencil_view.h"
 
 namespace stencil {
 namespace {
 
-enum class View { Colour, StencilRamp, StencilBits, Depth };
-constexpr int kViews = 4;
+// In the order Tab cycles them, as kViewNames names them (--view).
+enum class View { Colour, StencilRamp, StencilGrey, StencilBits, Depth };
+constexpr int kViews = kViewCount;
 
 struct WindowState {
   Session& session;
@@ -41,7 +47,29 @@ struct WindowState {
   int lessonIndex = -1;                            // this lesson's place in it, -1 where it is not there
   bool sayLayout = false;                          // say the picture's size once the layout has changed
   bool sayDepthRange = false;                      // say the depth view's legend once it is shown
+  float uiScale = 1.0f;                            // --ui-scale, the monitor's, or + and -
+  bool scaleChanged = true;                        // the fonts and sizes are rebuilt before the next frame
+  bool escapeEdits = false;                        // Esc ended a typed edit: it does not quit
+  int sayCountsAfter = -1;                         // say the counts new in this frame (after a key changed an option)
+  std::vector<std::string> countsBefore = {};      // the count names before the option changed
+  FrameRate rate = {};
+  // $STENCIL_FRAME_LOG: every frame's end on the window's clock, one a line, flushed at F2, so a
+  // test can count frames over wall time itself (tests/window/frame_rate.sh).
+  std::unique_ptr<std::ofstream> frameLog = {};
+  float optionsHeight = 0, bottomHeight = 0;
+  int layoutFrames = 0;  // frames drawn since the layout changed  // the panel's last layout: the options, the controls below
 };
+
+// The panel's width in screen pixels at a UI scale.
+int panelWidth(float uiScale) {
+  return static_cast<int>(std::lround(kWindowPanelWidth * uiScale));
+}
+
+std::string scaleText(float scale) {
+  char text[16];
+  std::snprintf(text, sizeof text, "%g", static_cast<double>(scale));
+  return text;
+}
 
 WindowState& stateOf(GLFWwindow* w) {
   return *static_cast<WindowState*>(glfwGetWindowUserPointer(w));
@@ -87,6 +115,7 @@ void sayStep(const WindowState& st) {
 const char* viewName(View v) {
   return v == View::Colour        ? "colour"
          : v == View::StencilRamp ? "stencil"
+         : v == View::StencilGrey ? "stencil in grey (value = grey level)"
          : v == View::StencilBits ? "bit planes"
                                   : "depth";
 }
@@ -103,16 +132,62 @@ void goToLesson(GLFWwindow* w, WindowState& st, int index) {
   glfwSetWindowShouldClose(w, GLFW_TRUE);
 }
 
+// The text an option's help gives its value: "3 B - A" in "0 A + B, 1 A * B, 2 A - B, 3 B - A",
+// "keyhole" in "0 keyhole, 1 the three operations"; empty where the help names no values.
+std::string valueName(const Option& o, int value) {
+  if (o.min == 0 && o.max == 1) return {};
+  const std::string v = std::to_string(value) + " ";
+  const std::string& h = o.help;
+  for (std::size_t at = h.find(v); at != std::string::npos; at = h.find(v, at + 1)) {
+    // The number starts a list item: at the start, after ": ", ", " or a newline's indent.
+    if (at > 0 && h[at - 1] != ' ') continue;
+    if (at > 1 && h[at - 1] == ' ' && h[at - 2] != ':' && h[at - 2] != ',' && h[at - 2] != ' ') continue;
+    std::size_t end = at + v.size();
+    // The item runs to the next ", N " or the end (a wrapped help's newline and indent skipped).
+    std::size_t stop = end;
+    for (; stop < h.size(); ++stop) {
+      if (h[stop] == '\n') break;
+      if (h[stop] == ',' && stop + 2 < h.size() && h[stop + 1] == ' ' &&
+          std::isdigit(static_cast<unsigned char>(h[stop + 2])))
+        break;
+    }
+    std::string name = h.substr(end, stop - end);
+    // The name, not its explanation: up to a bracket, a colon or a semicolon ("jittered", not
+    // "jittered (one random sample a cell)").
+    name = name.substr(0, std::min({name.find(" ("), name.find(':'), name.find(';')}));
+    while (!name.empty() && (name.back() == ' ' || name.back() == ',')) name.pop_back();
+    if (!name.empty()) return name;
+  }
+  return {};
+}
+
+std::string optionLine(const Option& o) {
+  const std::string name = valueName(o, o.value);
+  return o.name + " = " + std::to_string(o.value) + (name.empty() ? std::string() : " (" + name + ")");
+}
+
+void setUiScale(WindowState& st, float scale) {
+  scale = std::clamp(std::round(scale / kUiScaleStep) * kUiScaleStep, kMinUiScale, kMaxUiScale);
+  if (scale == st.uiScale) return;
+  st.uiScale = scale;
+  st.scaleChanged = st.sayLayout = true;
+}
+
 void onKey(GLFWwindow* w, int key, int, int action, int mods) {
   if (action != GLFW_PRESS) return;
-  // Esc always quits. Every other key is the lesson's, except while a panel field takes typed
-  // text (a slider ctrl-clicked to type a number): then the keys are the field's.
+  WindowState& st = stateOf(w);
+  // While a panel field takes typed text (a slider ctrl-clicked to type a number) the keys are
+  // the field's, Esc included: it ends the edit. Otherwise Esc quits and the other keys are the
+  // lesson's.
+  if (ImGui::GetIO().WantTextInput) {
+    if (key == GLFW_KEY_ESCAPE) say(st, "edit cancelled (Esc again quits)");
+    return;
+  }
   if (key == GLFW_KEY_ESCAPE) {
+    say(st, "quit");
     glfwSetWindowShouldClose(w, GLFW_TRUE);
     return;
   }
-  if (ImGui::GetIO().WantTextInput) return;
-  WindowState& st = stateOf(w);
   Session& s = st.session;
   const int passCount = passesRun(s);
   switch (key) {
@@ -137,7 +212,26 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
       st.panel = !st.panel;
       st.sayLayout = true;
       return;
-    case GLFW_KEY_R: s.camera = findVariant(s.info, s.variant).camera.value_or(s.info.camera); return;
+    case GLFW_KEY_R:
+      s.camera = findVariant(s.info, s.variant).camera.value_or(s.info.camera);
+      say(st, "camera reset");
+      return;
+    case GLFW_KEY_F2: {
+      // The panel's figure, with the frames counted since the window opened and the clock, so a
+      // test can set it against frames over wall time.
+      char line[160];
+      std::snprintf(line, sizeof line, "frame rate: %.2f fps, %.2f ms a frame (%zu frames in the last %.2f s); frame %lld at %.6f s",
+                    st.rate.fps(), st.rate.msPerFrame(), st.rate.intervals(),
+                    st.rate.fps() > 0 ? static_cast<double>(st.rate.intervals()) / st.rate.fps() : 0.0,
+                    st.rate.frames(), glfwGetTime());
+      if (st.frameLog) st.frameLog->flush();
+      say(st, line);
+      return;
+    }
+    case GLFW_KEY_EQUAL:
+    case GLFW_KEY_KP_ADD: setUiScale(st, st.uiScale + kUiScaleStep); return;
+    case GLFW_KEY_MINUS:
+    case GLFW_KEY_KP_SUBTRACT: setUiScale(st, st.uiScale - kUiScaleStep); return;
     case GLFW_KEY_V: {
       const auto& vs = s.info.variants;
       auto it = std::find_if(vs.begin(), vs.end(), [&](const Variant& v) { return v.name == s.variant; });
@@ -150,7 +244,11 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
   for (Option& o : s.options)
     if (std::toupper(static_cast<unsigned char>(o.key)) == key) {
       o.value = o.value >= o.max ? o.min : o.value + 1;
-      say(st, o.name + " = " + std::to_string(o.value));
+      say(st, optionLine(o));
+      // What the option makes the lesson count (lesson 14's oracle, say) is said after the next frame.
+      st.countsBefore.clear();
+      for (const auto& [name, n] : s.recorder->counts()) st.countsBefore.push_back(name);
+      st.sayCountsAfter = 1;
     }
 }
 
@@ -217,68 +315,181 @@ class Display {
   GLuint texture_ = 0, fbo_ = 0;
 };
 
-void drawPanel(GLFWwindow* window, WindowState& st, double fps, float height) {
+// What the panel's last layout measured, for the line the window says about it.
+struct PanelFit {
+  float contentBottom = 0, height = 0;  // screen pixels: the last widget's bottom, the panel's height
+  std::vector<std::string> cut;         // labels or choices drawn narrower than their text
+  float optionsShown = 0, optionsWanted = 0;  // the options' scrolling area and what they need
+};
+
+// A combo box the panel's full width, its choice shown after `label` ("variant [V]: ops") or alone
+// where both do not fit, its list as wide as its widest choice: no name is cut.
+template <typename Names, typename Pick>
+void fullWidthCombo(const char* id, const std::string& label, const std::string& current, const Names& names,
+                    const std::string& chosen, Pick pick, PanelFit& fit) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float arrow = ImGui::GetFrameHeight(), width = ImGui::GetContentRegionAvail().x;
+  const auto fits = [&](const std::string& text) {
+    return ImGui::CalcTextSize(text.c_str()).x + style.FramePadding.x * 2 + arrow <= width;
+  };
+  // The label and its key where they fit, else the choice alone (the keys' hint names the key).
+  std::string preview = label + ": " + current;
+  if (!fits(preview)) preview = current;
+  if (!fits(preview)) fit.cut.push_back(preview);
+  float widest = 0;
+  for (const std::string& n : names) widest = std::max(widest, ImGui::CalcTextSize(n.c_str()).x);
+  ImGui::SetNextWindowSizeConstraints(
+      ImVec2(std::max(width, widest + style.WindowPadding.x * 2 + style.ScrollbarSize), 0),
+      ImVec2(1e6f, ImGui::GetTextLineHeightWithSpacing() * 20 + style.WindowPadding.y * 2));
+  ImGui::SetNextItemWidth(width);
+  if (ImGui::BeginCombo(id, preview.c_str())) {
+    for (const std::string& n : names)
+      if (ImGui::Selectable(n.c_str(), n == chosen)) pick(n);
+    ImGui::EndCombo();
+  }
+}
+
+// Lays the panel out to fit the window: two-state options side by side where they fit, the keys'
+// hints in full where there is room and in one line where there is not. Returns what it measured.
+PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
   Session& s = st.session;
+  PanelFit fit;
+  fit.height = height;
   ImGui::SetNextWindowPos(ImVec2(0, 0));
-  ImGui::SetNextWindowSize(ImVec2(static_cast<float>(kWindowPanelWidth), height));
+  ImGui::SetNextWindowSize(ImVec2(static_cast<float>(panelWidth(st.uiScale)), height));
   // No keyboard navigation in the panel: Tab is the lesson's (the view), never a jump into a
   // slider's text field that would keep the keys from then on.
   ImGui::Begin(s.info.id.c_str(), nullptr,
                ImGuiWindowFlags_NoNavInputs | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                    ImGuiWindowFlags_NoCollapse);
   ImGui::PushAllowKeyboardFocus(false);
-  ImGui::PushItemWidth(-120.0f);  // the widgets leave room for their labels in the strip
-  ImGui::TextUnformatted(s.info.title.c_str());
-  if (st.lessonIndex >= 0 &&
-      ImGui::BeginCombo("lesson [PgUp PgDn]",
-                        st.course[static_cast<std::size_t>(st.lessonIndex)].filename().c_str())) {
-    for (std::size_t i = 0; i < st.course.size(); ++i)
-      if (ImGui::Selectable(st.course[i].filename().c_str(), static_cast<int>(i) == st.lessonIndex))
-        goToLesson(window, st, static_cast<int>(i));
-    ImGui::EndCombo();
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float full = ImGui::GetContentRegionAvail().x;
+  const auto label = [](const Option& o) { return o.name + " [" + o.key + "]"; };
+  // Sliders leave room for the widest label beside them.
+  float widestLabel = ImGui::CalcTextSize("after pass [P]").x;
+  for (const Option& o : s.options)
+    if (!(o.min == 0 && o.max == 1)) widestLabel = std::max(widestLabel, ImGui::CalcTextSize(label(o).c_str()).x);
+  const float stepperWidth = std::max(full - widestLabel - style.ItemInnerSpacing.x, full * 0.4f);
+  // Cut: drawn past the right edge of the window (or child) it is in, taken where a row starts.
+  float edge = ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x;
+  const auto rightEdge = [&] { return edge; };
+  const auto checkCut = [&](const std::string& text) {
+    if (ImGui::GetItemRectMax().x > rightEdge() + 0.5f) fit.cut.push_back(text);
+  };
+
+  ImGui::TextWrapped("%s", s.info.title.c_str());
+  if (st.lessonIndex >= 0) {
+    std::vector<std::string> names;
+    for (const auto& l : st.course) names.push_back(l.filename().string());
+    const std::string current = names[static_cast<std::size_t>(st.lessonIndex)];
+    fullWidthCombo("##lesson", "lesson [PgUp PgDn]", current, names, current,
+                   [&](const std::string& n) {
+                     goToLesson(window, st,
+                                static_cast<int>(std::find(names.begin(), names.end(), n) - names.begin()));
+                   },
+                   fit);
   }
-  if (ImGui::BeginCombo("variant [V]", s.variant.c_str())) {
-    for (const Variant& v : s.info.variants)
-      if (ImGui::Selectable(v.name.c_str(), v.name == s.variant)) switchVariant(s, v.name);
-    ImGui::EndCombo();
-  }
-  for (Option& o : s.options) {
-    const std::string label = o.name + " [" + o.key + "]";
-    if (o.min == 0 && o.max == 1) {
-      bool on = o.value != 0;
-      if (ImGui::Checkbox(label.c_str(), &on)) o.value = on ? 1 : 0;
-    } else {
-      ImGui::SliderInt(label.c_str(), &o.value, o.min, o.max);
+  std::vector<std::string> variants;
+  for (const Variant& v : s.info.variants) variants.push_back(v.name);
+  fullWidthCombo("##variant", "variant [V]", s.variant, variants, s.variant,
+                 [&](const std::string& n) { switchVariant(s, n); }, fit);
+  // The options take the room the controls below leave them, and scroll within it where they
+  // need more: the views, the pass stepper and the frame rate stay in the window. The heights are
+  // the last frame's (the first frame's guess is corrected by the second).
+  const std::string keys = std::string("drag: orbit  wheel: zoom  R: reset  S: screenshot (shift: with the panel)  "
+                                       "PgDn PgUp: next, previous lesson  F1: hide the panel  + -: text size  "
+                                       "F2: say the frame rate  Esc: quit") +
+                           (s.info.brush ? "  right drag: the lesson's brush" : "");
+  const float keysExtra = ImGui::CalcTextSize(keys.c_str(), nullptr, false, full).y - ImGui::GetTextLineHeight();
+  const float room = height - style.WindowPadding.y - ImGui::GetCursorPosY();
+  const float below = st.bottomHeight > 0 ? st.bottomHeight : 12 * ImGui::GetFrameHeightWithSpacing();
+  const float wanted = st.optionsHeight > 0 ? st.optionsHeight : 1e6f;
+  const bool fullKeys = wanted + below + keysExtra <= room;
+  if (!s.options.empty()) {
+    const float shown = std::max(std::min(wanted, room - below - (fullKeys ? keysExtra : 0.0f)),
+                                 2 * ImGui::GetFrameHeightWithSpacing());
+    fit.optionsShown = shown, fit.optionsWanted = wanted;
+    ImGui::BeginChild("##options", ImVec2(0, shown), false, ImGuiWindowFlags_NoNavInputs);
+    const float inner = ImGui::GetContentRegionAvail().x, panelEdge = edge;
+    edge = ImGui::GetCursorScreenPos().x + inner;
+    const float sliderWidth = std::max(inner - widestLabel - style.ItemInnerSpacing.x, inner * 0.4f);
+    bool sameRow = false;  // the last widget was a checkbox that may take one beside it
+    for (Option& o : s.options) {
+      const std::string text = label(o);
+      if (o.min == 0 && o.max == 1) {
+        const float w = ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(text.c_str()).x;
+        if (sameRow && ImGui::GetItemRectMax().x + style.ItemSpacing.x + w <= rightEdge())
+          ImGui::SameLine();
+        bool on = o.value != 0;
+        if (ImGui::Checkbox(text.c_str(), &on)) o.value = on ? 1 : 0;
+        sameRow = true;
+      } else {
+        // The value's name where it fits in the slider (else the number alone; R's line and the
+        // tooltip give the name).
+        const std::string name = valueName(o, o.value);
+        std::string format = "%d";
+        if (!name.empty() && ImGui::CalcTextSize((std::to_string(o.value) + ": " + name).c_str()).x +
+                                     2 * style.FramePadding.x <=
+                                 sliderWidth) {
+          format = "%d: ";
+          for (const char c : name) format += c == '%' ? std::string("%%") : std::string(1, c);
+        }
+        ImGui::SetNextItemWidth(sliderWidth);
+        ImGui::SliderInt(text.c_str(), &o.value, o.min, o.max, format.c_str());
+        sameRow = false;
+      }
+      checkCut(text);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", o.help.c_str());
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", o.help.c_str());
+    st.optionsHeight = ImGui::GetCursorPosY() - style.ItemSpacing.y;
+    ImGui::EndChild();
+    edge = panelEdge;
   }
+  const float bottomStart = ImGui::GetCursorPosY();
+
   ImGui::Separator();
+  ImGui::AlignTextToFramePadding();  // on the radio buttons' line
+  ImGui::TextUnformatted("view [Tab]");
   int view = static_cast<int>(st.view);
-  ImGui::RadioButton("colour", &view, 0);
-  ImGui::SameLine();
-  ImGui::RadioButton("stencil", &view, 1);
-  ImGui::SameLine();
-  ImGui::RadioButton("bits", &view, 2);
-  ImGui::SameLine();
-  ImGui::RadioButton("depth [Tab]", &view, 3);
+  for (int v = 0; v < kViews; ++v) {
+    const float w = ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(kViewNames[v]).x;
+    if (ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x + style.ItemSpacing.x + w <= style.WindowPadding.x + full)
+      ImGui::SameLine();
+    ImGui::RadioButton(kViewNames[v], &view, v);
+  }
   st.view = static_cast<View>(view);
   const std::string passName = stepName(s, st.passStep);
+  ImGui::SetNextItemWidth(stepperWidth);
   ImGui::SliderInt("after pass [P]", &st.passStep, -1, passesRun(s) - 1, passName.c_str());
+  checkCut("after pass [P]");
   ImGui::Checkbox("pause [Space]", &st.paused);
   ImGui::SameLine();
   ImGui::Text(st.passStep >= 0 ? "t = %.2f s, held" : "t = %.2f s", st.time);
   ImGui::Separator();
+  // Frames in the last second, not a smoothed 1/dt: right within a second of any change of rate.
+  ImGui::Text("%.1f fps, %.1f ms a frame", st.rate.fps(), st.rate.msPerFrame());
   std::uint64_t draws = 0, triangles = 0;
   for (const PassStats& p : s.recorder->passStats()) draws += p.drawCalls, triangles += p.triangles;
-  ImGui::Text("%.0f fps, %llu draw calls, %llu triangles", fps, static_cast<unsigned long long>(draws),
+  ImGui::Text("%llu draw calls, %llu triangles", static_cast<unsigned long long>(draws),
               static_cast<unsigned long long>(triangles));
-  ImGui::TextWrapped(
-      "drag: orbit  wheel: zoom  R: reset  S: screenshot (shift: with the panel)  "
-      "PgDn PgUp: next, previous lesson  F1: hide the panel  Esc: quit");
-  ImGui::TextWrapped("right drag: the lesson's brush, where it has one");
-  ImGui::PopItemWidth();
+  // The lesson's own counts (Frame::count): what an option such as lesson 14's oracle found.
+  if (!s.recorder->counts().empty()) {
+    if (st.sayCountsAfter == 0) ImGui::SetNextItemOpen(true);
+    if (ImGui::CollapsingHeader("the lesson's counts"))
+      for (const auto& [name, n] : s.recorder->counts())
+        ImGui::TextWrapped("%s %llu", name.c_str(), static_cast<unsigned long long>(n));
+  }
+  // The keys in full where they fit, else one line.
+  if (fullKeys)
+    ImGui::TextWrapped("%s", keys.c_str());
+  else
+    ImGui::TextUnformatted(s.info.brush ? "keys: --help; right drag: brush" : "keys: --help lists them");
+  st.bottomHeight = ImGui::GetCursorPosY() - bottomStart - (fullKeys ? keysExtra : 0.0f);
+  fit.contentBottom = ImGui::GetCursorPosY() - style.ItemSpacing.y + style.WindowPadding.y;
   ImGui::PopAllowKeyboardFocus();
   ImGui::End();
+  return fit;
 }
 
 // Columns x0 .. x0 + width of an image.
@@ -296,6 +507,43 @@ void saveScreenshot(WindowState& st, const Image& image) {
   std::cerr << "saved " << name << "\n";
 }
 
+// The fonts and sizes for a UI scale: the default font rebuilt at 13 px x scale (crisp, not
+// stretched), the style's sizes scaled from the defaults. Between frames only.
+void applyUiScale(float scale) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.Fonts->Clear();
+  ImFontConfig font;
+  font.SizePixels = std::round(13.0f * scale);
+  io.Fonts->AddFontDefault(&font);
+  ImGui_ImplOpenGL3_DestroyFontsTexture();
+  ImGui_ImplOpenGL3_CreateFontsTexture();
+  ImGuiStyle& style = ImGui::GetStyle();
+  style = ImGuiStyle();
+  ImGui::StyleColorsDark(&style);
+  style.ScaleAllSizes(scale);
+}
+
+// The stencil views' pictures: the values in grey (0 black, 255 white, the raw values as
+// docs/12's figures show them); the bit planes; or each value in its colour with the legend below,
+// its digits the UI scale's size (rounded, at least 1) and at most a fifth of the picture's height
+// high, the rarest values counted as "+N" where they do not fit (the grey view shows every value),
+// so a 256-value stencil keeps most of the window for its picture.
+Image stencilViewPicture(View view, const Image& stencil, float uiScale) {
+  if (view == View::StencilGrey) {
+    Image out(stencil.width, stencil.height, 4);
+    for (std::size_t i = 0; i < stencil.pixels.size(); ++i) {
+      std::uint8_t* p = &out.pixels[i * 4];
+      p[0] = p[1] = p[2] = stencil.pixels[i];
+      p[3] = 255;
+    }
+    return out;
+  }
+  if (view == View::StencilBits) return stencilBitPlanes(stencil);
+  const int k = std::max(1, static_cast<int>(std::lround(uiScale)));
+  // An entry row is 18 px at scale 1: as many rows as fit in a fifth of the picture, at least one.
+  return stencilRamp(stencil, {.legendScale = k, .maxLegendRows = std::max(1, stencil.height / 5 / (18 * k))});
+}
+
 }  // namespace
 
 int runWindow(Session& s) {
@@ -303,20 +551,36 @@ int runWindow(Session& s) {
   const CommandLine& cl = s.commandLine;
   WindowState st{.session = s, .time = cl.time};
   st.course = courseLessons();
-  st.panel = !cl.frames;  // a --frames run is a test: the window is the picture alone
+  st.panel = !cl.frames && !cl.panelHidden;  // a --frames run is a test: the window is the picture alone
+  st.view = static_cast<View>(std::clamp(cl.view, 0, kViews - 1));
   st.sayLayout = true;
+  if (const char* log = std::getenv("STENCIL_FRAME_LOG"); log && *log)
+    st.frameLog = std::make_unique<std::ofstream>(log);
   for (std::size_t i = 0; i < st.course.size(); ++i)
     if (st.course[i].filename() == s.info.id) st.lessonIndex = static_cast<int>(i);
   say(st, "lesson " + s.info.id + ": " + s.info.title +
               (st.lessonIndex >= 0 ? " (" + std::to_string(st.lessonIndex + 1) + " of " +
                                          std::to_string(st.course.size()) + " in the course)"
                                    : std::string()));
+  // The UI scale: --ui-scale, else the monitor's content scale (a HiDPI screen's, or what the
+  // desktop sets for a projector). The window opened --size plus the panel at --ui-scale or 1.
+  float monitorScale = 1.0f, unused = 1.0f;
+  glfwGetWindowContentScale(window, &monitorScale, &unused);
+  st.uiScale = std::clamp(cl.uiScale.value_or(monitorScale), kMinUiScale, kMaxUiScale);
+  if (st.panel && st.uiScale != cl.uiScale.value_or(1.0f))
+    glfwSetWindowSize(window, cl.width + panelWidth(st.uiScale), cl.height);
+  if (cl.position) glfwSetWindowPos(window, cl.position->first, cl.position->second);
+  if (st.view != View::Colour) say(st, std::string("view: ") + viewName(st.view));
   glfwSetWindowUserPointer(window, &st);
   // Ours first: ImGui chains to the callbacks installed before it.
   glfwSetKeyCallback(window, onKey);
   glfwSetMouseButtonCallback(window, onMouseButton);
   glfwSetCursorPosCallback(window, onCursor);
   glfwSetScrollCallback(window, onScroll);
+  glfwSetWindowSizeCallback(window, [](GLFWwindow* w, int, int) { stateOf(w).sayLayout = true; });
+  glfwSetWindowContentScaleCallback(window, [](GLFWwindow* w, float x, float) {
+    if (!stateOf(w).session.commandLine.uiScale) setUiScale(stateOf(w), x);
+  });
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
@@ -326,9 +590,13 @@ int runWindow(Session& s) {
   int exitCode = 0;
   {
     Display display;
-    double last = glfwGetTime(), fps = 0;
+    double last = glfwGetTime();
     for (int frame = 0; !glfwWindowShouldClose(window); ++frame) {
       glfwPollEvents();
+      if (st.scaleChanged) {
+        applyUiScale(st.uiScale);
+        st.scaleChanged = false;
+      }
       int w = 0, h = 0;
       glfwGetFramebufferSize(window, &w, &h);
       if (w == 0 || h == 0) {  // minimised: nothing to draw until it comes back
@@ -341,20 +609,13 @@ int runWindow(Session& s) {
       glfwGetWindowSize(window, &ww, &wh);
       const float sx = static_cast<float>(w) / static_cast<float>(std::max(ww, 1)),
                   sy = static_cast<float>(h) / static_cast<float>(std::max(wh, 1));
-      const int areaX = st.panel ? std::min(static_cast<int>(kWindowPanelWidth * sx), w - 1) : 0;
+      const int areaX = st.panel ? std::min(static_cast<int>(static_cast<float>(panelWidth(st.uiScale)) * sx), w - 1) : 0;
       const int areaW = w - areaX;
       if (areaW != s.framebuffer->width() || h != s.framebuffer->height()) s.resize(areaW, h);
-      if (st.sayLayout) {
-        say(st, std::string(st.panel ? "panel shown" : "panel hidden") + ": the picture is " +
-                    std::to_string(areaW) + "x" + std::to_string(h) +
-                    (st.panel ? " beside it, from x = " + std::to_string(areaX) : std::string()));
-        st.sayLayout = false;
-      }
 
       // With --frames the window steps time exactly like a headless run, so its pixels
       // can be compared with a golden.
       const double now = glfwGetTime();
-      fps = 0.9 * fps + 0.1 / std::max(now - last, 1e-6);
       if (cl.frames)
         st.time = cl.time + frame / 60.0;
       else if (!st.paused && st.passStep < 0)  // stepping holds time: the passes stay the ones shown
@@ -373,6 +634,7 @@ int runWindow(Session& s) {
       // A variant switched to may run fewer passes: the step stays among those the last frame ran.
       st.passStep = std::min(st.passStep, passesRun(s) - 1);
       const int step = st.passStep;
+      s.uiScale = st.uiScale;
       s.saveShadowMasks = cl.frames && frame + 1 >= *cl.frames;  // --mask-out: the last frame, as headless
       s.renderFrame(st.time, {.measure = false,
                               .captureAll = false,
@@ -380,6 +642,14 @@ int runWindow(Session& s) {
       const Snapshot* snap = nullptr;
       if (step >= 0)
         for (const Snapshot& sn : s.recorder->snapshots()) snap = &sn;
+      if (st.sayCountsAfter == 0) {
+        // The counts an option change brought (lesson 14's oracle_*), in one line.
+        std::string line;
+        for (const auto& [name, n] : s.recorder->counts())
+          if (std::find(st.countsBefore.begin(), st.countsBefore.end(), name) == st.countsBefore.end())
+            line += (line.empty() ? "" : ", ") + name + " " + std::to_string(n);
+        if (!line.empty()) say(st, "counts: " + line);
+      }
 
       Image shown;
       if (st.view == View::Colour && !snap) {
@@ -394,9 +664,7 @@ int runWindow(Session& s) {
         display.show(shown, areaX, areaW, h);
       } else {
         const Image stencil = snap ? snap->stencil : s.framebuffer->readStencil();
-        shown = st.view == View::Colour        ? snap->colour
-                : st.view == View::StencilRamp ? stencilRamp(stencil)
-                                               : stencilBitPlanes(stencil);
+        shown = st.view == View::Colour ? snap->colour : stencilViewPicture(st.view, stencil, st.uiScale);
         display.show(shown, areaX, areaW, h);
       }
 
@@ -417,7 +685,9 @@ int runWindow(Session& s) {
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
-      if (st.panel) drawPanel(window, st, fps, static_cast<float>(wh));
+      PanelFit fit;
+      if (st.panel) fit = drawPanel(window, st, static_cast<float>(wh));
+      if (st.sayCountsAfter >= 0) --st.sayCountsAfter;
       ImGui::Render();
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       glViewport(0, 0, w, h);
@@ -426,8 +696,53 @@ int runWindow(Session& s) {
         saveScreenshot(st, readColourPixels(0, w, h));
         st.windowScreenshot = false;
       }
+      // Said a frame after the change: the panel's layout uses the heights its last frame measured.
+      if (st.sayLayout && ++st.layoutFrames >= 2) {
+        st.layoutFrames = 0;
+        // One line for what changed the layout (F1, a resize, the UI scale): the picture's size,
+        // and whether the panel's widgets fit its height and width.
+        std::string line = std::string(st.panel ? "panel shown" : "panel hidden") + ": the picture is " +
+                           std::to_string(areaW) + "x" + std::to_string(h) +
+                           (st.panel ? " beside it, from x = " + std::to_string(areaX) : std::string());
+        int wx = 0, wy = 0;
+        glfwGetWindowPos(window, &wx, &wy);
+        line += "; window " + std::to_string(ww) + "x" + std::to_string(wh) + " at " + std::to_string(wx) + "," +
+                std::to_string(wy);
+        line += "; ui scale " + scaleText(st.uiScale) + ", text " +
+                std::to_string(static_cast<int>(std::round(13.0f * st.uiScale))) + " px";
+        if (st.panel) {
+          char room[96];
+          if (fit.contentBottom <= fit.height)
+            std::snprintf(room, sizeof room, "; the panel fits (%.0f of %.0f px)", fit.contentBottom, fit.height);
+          else
+            std::snprintf(room, sizeof room, "; the panel runs %.0f px past the bottom (it scrolls)",
+                          fit.contentBottom - fit.height);
+          line += room;
+          if (fit.optionsShown + 0.5f < fit.optionsWanted)
+            line += "; the options scroll (" + std::to_string(static_cast<int>(fit.optionsShown)) + " of " +
+                    std::to_string(static_cast<int>(fit.optionsWanted)) + " px shown)";
+          for (const std::string& c : fit.cut) line += "; cut: " + c;
+        }
+        say(st, line);
+        st.sayLayout = false;
+      }
       glfwSwapBuffers(window);
+      const double ended = glfwGetTime();
+      st.rate.frameEnded(ended);
+      if (st.frameLog) *st.frameLog << std::fixed << ended << "\n";
     }
+  }
+  // What the next lesson opens with: this window's picture size, place, scale, view and panel.
+  if (s.nextLesson) {
+    int ww = 0, wh = 0, x = 0, y = 0;
+    glfwGetWindowSize(window, &ww, &wh);
+    glfwGetWindowPos(window, &x, &y);
+    const int pictureW = std::max(1, ww - (st.panel ? panelWidth(st.uiScale) : 0));
+    s.nextLessonFlags = {"--size",     std::to_string(pictureW) + "x" + std::to_string(std::max(1, wh)),
+                         "--position", std::to_string(x) + "," + std::to_string(y),
+                         "--ui-scale", scaleText(st.uiScale),
+                         "--view",     kViewNames[static_cast<int>(st.view)],
+                         "--panel",    st.panel ? "shown" : "hidden"};
   }
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();

@@ -603,6 +603,7 @@ LessonInfo lessonInfo() {
        {{"method", kMethodDiscard}, {"step", 128}}},
   };
   info.passes = {"pattern", "paint", "measure", "scene-a", "scene-b", "mix"};
+  info.brush = true;  // right-drag sprays B through A (the brush option)
   info.camera.target = {0.0f, 0.6f, 0.0f};
   info.camera.distance = 6.5f;
   info.camera.azimuthDeg = 25.0f;

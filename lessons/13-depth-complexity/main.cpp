@@ -170,7 +170,9 @@ class DepthComplexity final : public Lesson {
 
     // 5. The legend along the bottom: the ramp, the histogram as bars, and 255+ where INCR stops.
     if (f.on("legend") && f.on("show")) {
-      const Image legend = countLegend(histogram, top, saturates, f.size.x);
+      // Its digits grow with the window's UI scale (1 headless: the pictures the goldens hold).
+      const int textScale = static_cast<int>(std::lround((f.size.x >= 480 ? 2 : 1) * f.uiScale));
+      const Image legend = countLegend(histogram, top, saturates, f.size.x, textScale);
       overlay_.draw(legend, 0, f.size.y - legend.height, f.size.y);
     }
     f.pass("legend");

@@ -140,7 +140,7 @@ CsgScene sceneFor(const Frame& f, const Scene* fromFile) {
   if (fromFile && method == kTwoSolids)
     throw UsageError(
         "--scene: method 0 draws the demo's two solids; the scene's csg expression needs "
-        "--set method=1, 2 or 3");
+        "--set method=1, 2, 3 or 4");
   if (fromFile) return fileScene(*fromFile, f.time);
   if (method == kTwoSolids) return twoSolids(f.option("op"));
   return goldfeatherScene(f.option("scene"), f.option("op"), f.option("grid"));
@@ -200,7 +200,7 @@ static std::string scsRefusal(const OptionsChosen& o) {
   }
   for (const auto& [name, mesh] : meshes)
     if (!convexMesh(*mesh))
-      return "method 3 (SCS) takes convex primitives only; '" + name + "' is concave: use method 1 or 2";
+      return "method 3 (SCS) takes convex primitives only; '" + name + "' is concave: use method 1, 2 or 4";
   return {};
 }
 
@@ -220,8 +220,9 @@ LessonInfo lessonInfo() {
   info.options = {
       {"method", 'M',
        "0 two convex solids (the demo), 1 Goldfeather, 2 layered Goldfeather,\n"
-       "      3 SCS (convex primitives only)",
-       kTwoSolids, 3},
+       "      3 SCS (convex primitives only), 4 automatic (per product: SCS until a cycle changes\n"
+       "      nothing where every primitive is convex, else layered Goldfeather; scissored)",
+       kTwoSolids, 4},
       {"op", 'O', "two solids: 0 A + B, 1 A * B, 2 A - B, 3 B - A", kAMinusB, 3},
       {"scene", 'N',
        "the scene of methods 1 to 3: 0 the two solids (by op), 1 cube * sphere - three cylinders,\n"
@@ -320,7 +321,7 @@ LessonInfo lessonInfo() {
                o.scene->file.string() + " is the scene";
     if (o.value("method") == kTwoSolids)
       return "--scene: method 0 draws the demo's two solids; the scene's csg expression needs "
-             "--set method=1, 2 or 3";
+             "--set method=1, 2, 3 or 4";
     return scsRefusal(o);
   };
   return info;

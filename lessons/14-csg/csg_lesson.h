@@ -19,7 +19,7 @@ namespace stencil::csg_lesson {
 
 // The two-solid method's operations (the "op" option), and the methods.
 constexpr int kUnion = 0, kIntersection = 1, kAMinusB = 2, kBMinusA = 3;
-constexpr int kTwoSolids = 0, kGoldfeather = 1, kLayered = 2, kScs = 3;
+constexpr int kTwoSolids = 0, kGoldfeather = 1, kLayered = 2, kScs = 3, kAutomatic = 4;
 // The two-solid method's stencil: bit 0 the count's parity, bits 7 and 6 where A's and B's
 // surfaces were kept (the primitive each pixel shows).
 constexpr GLuint kParity = 0x01, kKeptA = 0x80, kKeptB = 0x40;
@@ -55,13 +55,22 @@ class Csg final : public Lesson {
   void mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets);
   int targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<int>& targets);
   void scs(Frame& f, const SumOfProducts& sop);
+  void scsEnter(Frame& f, const CsgProduct& p);
+  void scsSubtract(Frame& f, int s, GLuint query = 0, bool clean = false);
+  bool reachesPastFar(const Frame& f, int i) const;
   void clipByIntersection(Frame& f, const CsgProduct& p);
+
+  // ---- automatic.cpp: per product the method that is right for it, with OpenCSG's economies ------
+  void automatic(Frame& f, const SumOfProducts& sop);
+  void scsUntilUnchanged(Frame& f, const CsgProduct& p);
+  void classifyPrimitives(const CsgScene& scene);
+  bool scissorTo(const Frame& f, int i) const;
 
   // ---- drawing.cpp: the work buffer and the draws ------------------------------------------------
   void workBuffer(glm::ivec2 size);
   CsgTree prepare(const CsgScene& scene, double time);
   static bool subtracted(const CsgProduct& p, int primitive);
-  enum class Paint { Depth, Lit, Selected, Merged };
+  enum class Paint { Depth, Selected, Merged };
   void drawTargets(const CsgProduct& p, const std::vector<int>& targets, Paint paint);
   void setLighting(const Program& p, const Frame& f) const;
   void drawDepth(int i);
@@ -83,9 +92,13 @@ class Csg final : public Lesson {
   GpuMesh quad_;
   std::vector<std::unique_ptr<GpuMesh>> meshes_;
   std::vector<glm::vec3> colours_;
-  std::vector<bool> convex_;  // per primitive, from its mesh (isConvex)
   std::vector<glm::mat4> models_;
   std::string preparedFor_;
+  // Per primitive, whether its mesh is convex (prepare(), and automatic.cpp again with) its
+  // object-space bounding box (for the scene prepare() made, classifiedFor_).
+  std::vector<bool> convex_;
+  std::vector<std::pair<glm::vec3, glm::vec3>> boxes_;
+  std::string classifiedFor_;
   // The work buffer: depth and stencil, the pass stepper's colour, and per pixel the primitive
   // whose fragment wrote the depth (its index + 1; 0 none), which the merge draws alone.
   GLuint work_ = 0, workDepth_ = 0, workColour_ = 0, workPrimitive_ = 0;

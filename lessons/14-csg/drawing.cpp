@@ -75,6 +75,7 @@ CsgTree Csg::prepare(const CsgScene& scene, double time) {
   if (scene.expression != preparedFor_) {
     meshes_.clear();
     colours_.clear();
+    convex_.clear();
     for (const Primitive& p : scene.primitives) {
       meshes_.push_back(std::make_unique<GpuMesh>(p.mesh));
       colours_.push_back(p.colour);
@@ -96,9 +97,9 @@ bool Csg::subtracted(const CsgProduct& p, int primitive) {
 }
 
 // Draws the target faces of `targets` in the product: front faces of the intersected ones,
-// back faces of the subtracted ones; in white (Depth: for the depth and stencil alone), lit, lit
-// with the primitive recorded in the work buffer (Selected), or lit where the work buffer says
-// the fragment is the product's surface (Merged).
+// back faces of the subtracted ones; in white (Depth: for the depth and stencil alone), lit with
+// the primitive recorded in the work buffer (Selected), or lit where the work buffer says the
+// fragment is the product's surface (Merged).
 void Csg::drawTargets(const CsgProduct& p, const std::vector<int>& targets, Paint paint) {
   for (int x : targets) {
     glCullFace(subtracted(p, x) ? GL_FRONT : GL_BACK);
@@ -106,8 +107,6 @@ void Csg::drawTargets(const CsgProduct& p, const std::vector<int>& targets, Pain
       drawMerged(x);
     else if (paint == Paint::Selected)
       drawSelected(x);
-    else if (paint == Paint::Lit)
-      drawShaded(x);
     else
       drawDepth(x);
   }

@@ -45,7 +45,8 @@
 // painted for the pass stepper only (the selected layer lit, trimmed pixels the background), so
 // stepping through the passes shows the work buffer's colour, depth and stencil at each step.
 // Reading order: render, the two solids, Goldfeather, layered Goldfeather (its depth complexity), SCS;
-// the work buffer and the draws are in drawing.cpp, the scenes, cameras, options and variants in
+// the automatic method (per product SCS or layered Goldfeather, OpenCSG's economies) is in
+// automatic.cpp, the work buffer and the draws in drawing.cpp, the scenes, cameras, options and variants in
 // classroom.cpp, the oracle's hook in oracle.cpp.
 
 #include <algorithm>
@@ -83,6 +84,10 @@ void Csg::render(Frame& f) {
     twoSolidsMethod(f, scene, f.option("op"));
   else if (method == kScs)
     scs(f, normalize(tree));
+  else if (method == kAutomatic) {
+    classifyPrimitives(scene);
+    automatic(f, normalize(tree));
+  }
   else
     goldfeather(f, normalize(tree), method == kLayered);
 
@@ -397,52 +402,11 @@ void Csg::scs(Frame& f, const SumOfProducts& sop) {
   workBuffer(f.size);
   mergeInputs();
   for (const CsgProduct& p : sop.products) {
-    glBindFramebuffer(GL_FRAMEBUFFER, work_);
-    // The work buffer's colour follows the surface as it moves (no part of the method: the
-    // pass stepper's picture of it).
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glEnable(GL_DEPTH_TEST);
-    glEnable(GL_STENCIL_TEST);
-    glStencilMask(0xFF);
-    glClearDepth(nearest());  // the furthest front face wins: start at the near plane
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    glClearDepth(depth_.farthest);
-    // 1. The intersected primitives' front faces, the furthest kept: where the ray has entered
-    // them all, if it is inside them all there.
-    glDepthFunc(further());
-    glDepthMask(GL_TRUE);
-    glStencilFunc(GL_ALWAYS, 0, 0);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    glCullFace(GL_BACK);
-    for (int a : p.intersected) drawSelected(a);
-    clipByIntersection(f, p);
-    f.pass("intersect");
-    // 2. The subtraction sequence: where the surface lies inside s (s's back face behind it,
-    // its front face not: in front, or cut away by the near plane when the eye is inside s), the
-    // surface moves back to s's back face. The front face is tested behind (z-fail) so that a
-    // front face the near plane removed reads as in front.
+    scsEnter(f, p);
+    // 2. The subtraction sequence.
     const std::vector<int> order = subtractionSequence(static_cast<int>(p.subtracted.size()));
     f.count("sequence_length", order.size());
-    for (int i : order) {
-      const int s = p.subtracted[static_cast<std::size_t>(i)];
-      glStencilMask(0xFF);
-      glClear(GL_STENCIL_BUFFER_BIT);
-      glDepthFunc(furtherOrEqual());  // s's front face behind the surface, or on it: not inside s
-      glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-      glDepthMask(GL_FALSE);
-      glStencilFunc(GL_ALWAYS, 1, 0xFF);
-      glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-      glCullFace(GL_BACK);
-      drawDepth(s);
-      glDepthFunc(further());  // elsewhere, its back face behind it: the surface is inside s
-      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-      glDepthMask(GL_TRUE);  // it moves to that back face
-      glStencilFunc(GL_EQUAL, 0, 0xFF);
-      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-      glCullFace(GL_FRONT);
-      drawSelected(s);
-      f.count("subtraction_passes", 2);
-    }
+    for (int i : order) scsSubtract(f, p.subtracted[static_cast<std::size_t>(i)]);
     f.pass("subtract");
     // 3. A surface moved past an intersected primitive's back face left the intersection.
     clipByIntersection(f, p);
@@ -452,6 +416,64 @@ void Csg::scs(Frame& f, const SumOfProducts& sop) {
     targets.insert(targets.end(), p.subtracted.begin(), p.subtracted.end());
     mergeIntoFrame(f, p, targets);
   }
+}
+
+// SCS's step 1, in the work buffer: the intersected primitives' front faces, the furthest kept,
+// clipped to where the ray is inside them all.
+void Csg::scsEnter(Frame& f, const CsgProduct& p) {
+  glBindFramebuffer(GL_FRAMEBUFFER, work_);
+  // The work buffer's colour follows the surface as it moves (no part of the method: the
+  // pass stepper's picture of it).
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_STENCIL_TEST);
+  glStencilMask(0xFF);
+  glClearDepth(nearest());  // the furthest front face wins: start at the near plane
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glClearDepth(depth_.farthest);
+  // 1. The intersected primitives' front faces, the furthest kept: where the ray has entered
+  // them all, if it is inside them all there.
+  glDepthFunc(further());
+  glDepthMask(GL_TRUE);
+  glStencilFunc(GL_ALWAYS, 0, 0);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glCullFace(GL_BACK);
+  for (int a : p.intersected) drawSelected(a);
+  clipByIntersection(f, p);
+  f.pass("intersect");
+}
+
+// SCS's step 2 for one subtracted primitive s: where the surface lies inside s (s's back face
+// behind it, its front face not: in front, or cut away by the near plane when the eye is inside
+// s), the surface moves back to s's back face. The front face is tested behind (z-fail) so that a
+// front face the near plane removed reads as in front. A non-zero `query` counts the fragments
+// that moved (GL_SAMPLES_PASSED around the move alone). With `clean`, the stencil is left as
+// found (0): s's back faces cover every pixel its front faces marked (a closed convex solid whose
+// back faces the far plane does not cut: a front face beyond the near plane has its back face
+// beyond it too), and each mark they meet goes back to 0; the next subtraction needs no clear.
+void Csg::scsSubtract(Frame& f, int s, GLuint query, bool clean) {
+  glStencilMask(0xFF);
+  if (!clean) glClear(GL_STENCIL_BUFFER_BIT);
+  glDepthFunc(furtherOrEqual());  // s's front face behind the surface, or on it: not inside s
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glDepthMask(GL_FALSE);
+  glStencilFunc(GL_ALWAYS, 1, 0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  glCullFace(GL_BACK);
+  drawDepth(s);
+  glDepthFunc(further());  // elsewhere, its back face behind it: the surface is inside s
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);  // it moves to that back face
+  glStencilFunc(GL_EQUAL, 0, 0xFF);
+  if (clean)
+    glStencilOp(GL_ZERO, GL_KEEP, GL_KEEP);  // a mark fails the test and goes back to 0
+  else
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glCullFace(GL_FRONT);
+  if (query) glBeginQuery(GL_SAMPLES_PASSED, query);
+  drawSelected(s);
+  if (query) glEndQuery(GL_SAMPLES_PASSED);
+  f.count("subtraction_passes", 2);
 }
 
 // Counts the intersected primitives whose back face lies behind the surface (or on it) and sends

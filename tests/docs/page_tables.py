@@ -160,7 +160,7 @@ def csg_sweep():
     import csv
     rows = list(csv.DictReader((ROOT / "docs/sweeps/14-csg.csv").open()))
     names = {("grid", "2"): "grid 1x1", ("grid", "10"): "grid 3x3", ("grid", "26"): "grid 5x5",
-             ("grid3", "28"): "grid 3x3x3", ("grid", "50"): "grid 7x7", ("rack", "344"): "cube rack"}
+             ("grid3", "28"): "grid 3x3x3", ("grid", "50"): "grid 7x7", ("rack", "344"): "box rack"}
     lines = ["| scene | primitives | Goldfeather passes | layered passes | SCS passes |", "|---|---|---|---|---|"]
     for (scene, primitives), name in names.items():
         passes = {r["method"]: f"{int(r['passes']):,}" for r in rows if r["scene"] == scene and r["primitives"] == primitives}

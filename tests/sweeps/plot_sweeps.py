@@ -4,7 +4,8 @@
     plot_sweeps.py SWEEP IN.csv OUT.svg
 
 SWEEP names the sweep (its lesson): 03-recursive-mirrors, 05-light-blocking,
-09-cutout-extrusion, 10-soft-shadows, 14-csg, 16-fast-robust-shadows or silhouette-extraction;
+09-cutout-extrusion, 10-soft-shadows, 14-csg, 14-csg-opencsg (tests/bench/csg_opencsg_benchmark),
+16-fast-robust-shadows or silhouette-extraction;
 IN.csv is what tests/sweeps/<sweep>_sweep wrote (silhouette-extraction: what
 tests/bench/silhouette_benchmark --raw wrote); OUT.svg is replaced only once the plot is drawn. A missing or malformed CSV, an unknown
 sweep or a bad command line gets one line on stderr and exit 2.
@@ -417,6 +418,41 @@ def plot_csg(path):
     return fig
 
 
+def plot_csg_opencsg(path):
+    """tests/bench/csg_opencsg_benchmark's CSV: per size, each scene's time a frame by every
+    OpenCSG setting (squares) and every lesson 14 method (circles), log scale."""
+    rows = read_rows(path, ["primitives", "frame_ms", "draws", "coverage_diff_px"],
+                     text=["size", "scene", "renderer", "method"])
+    sizes, scenes, series = [], [], []
+    for r in rows:
+        for key, seen in ((r["size"], sizes), (r["scene"], scenes), ((r["renderer"], r["method"]), series)):
+            if key not in seen:
+                seen.append(key)
+    plt = pyplot()
+    fig, axes = plt.subplots(1, len(sizes), figsize=(6 * len(sizes), 4.4), layout="constrained", squeeze=False)
+    for ax, size in zip(axes[0], sizes):
+        for i, (renderer, method) in enumerate(series):
+            lib = renderer == "opencsg"
+            xs, ys = [], []
+            for j, scene in enumerate(scenes):
+                for r in rows:
+                    if (r["size"], r["scene"], r["renderer"], r["method"]) == (size, scene, renderer, method):
+                        xs.append(j + (i - len(series) / 2) * 0.05)
+                        ys.append(r["frame_ms"])
+            ax.plot(xs, ys, "s" if lib else "o", color=f"C{i % 10}", markerfacecolor="none" if lib else f"C{i % 10}",
+                    markersize=6, label=("OpenCSG " if lib else "lesson ") + method)
+        ax.set_yscale("log")
+        plain_log(ax.yaxis)
+        ax.set_xticks(range(len(scenes)))
+        ax.set_xticklabels([f"{s}\n({int(next(r['primitives'] for r in rows if r['scene'] == s))})"
+                            for s in scenes], fontsize=8)
+        ax.grid(True, which="major", axis="y", alpha=0.3)
+        ax.set_ylabel(f"time per frame (ms, {size}, llvmpipe)")
+        ax.set_title(f"OpenCSG's scenes at {size} (primitives)")
+    axes[0][-1].legend(fontsize=7, ncol=2)
+    return fig
+
+
 def plot_silhouette_extraction(path):
     """tests/bench/silhouette_benchmark's raw CSV: ns per triangle against triangles. Left, the
     brute force (the prepared passes) against the scan of its arrays and the mesh version; right,
@@ -486,6 +522,7 @@ SWEEPS = {
     "09-cutout-extrusion": plot_cutout_extrusion,
     "10-soft-shadows": plot_soft_shadows,
     "14-csg": plot_csg,
+    "14-csg-opencsg": plot_csg_opencsg,
     "16-fast-robust-shadows": plot_fast_shadows,
     "silhouette-extraction": plot_silhouette_extraction,
 }

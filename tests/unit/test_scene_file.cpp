@@ -331,7 +331,7 @@ TEST(SceneFile, ScenesBeyondTheLimitsAreRefusedAtTheLineThatCrossesThem) {
   for (std::size_t i = 0; i < kMaxSceneObjects; ++i) objects += "object o" + std::to_string(i) + " box\n";
   EXPECT_EQ(parseScene(objects, "x.scene").objects.size(), kMaxSceneObjects);
   EXPECT_EQ(errorOf(objects + "object last box\n"),
-            "test.scene:259: more than 256 objects; a scene has at most 256");
+            "test.scene:1027: more than 1024 objects; a scene has at most 1024");
 
   const std::string plane = std::string(header) + "object a plane divisions 707\n  casts no\n";
   EXPECT_EQ(parseScene(plane, "x.scene").objects[0].mesh.triangleCount(), 999698u);

@@ -2,7 +2,9 @@
 # Drives a lesson's window as a user does: opens it on a virtual display (xvfb-run), presses
 # keys with xdotool and waits, after each, for the line the window says on stderr.
 # usage: tests/window/keys.sh EXE [FLAGS...] -- KEY=REGEX...
-#   KEY    an xdotool key name (Tab, v, p, shift+p, Escape)
+#   KEY    an xdotool key name (Tab, v, p, shift+p, Escape); or size:WxH or move:X,Y, which resize
+#          or move the window as a user's window manager would (xdotool windowsize, windowmove);
+#          or sleep:SECONDS, a pause (no REGEX); or ctrlclick:X,Y, a ctrl+click in the window
 #   REGEX  an extended regular expression that a line the window says after the key must match,
 #          within 10 s; the next step looks only at the lines after that one. Empty: no line wanted.
 # After the steps one Escape must close the window within 10 s.
@@ -11,7 +13,8 @@ set -uo pipefail
 if [ -z "${KEYS_SH_DISPLAY:-}" ]; then
   command -v xvfb-run >/dev/null || { echo "xvfb-run is not installed (apt-get install xvfb xauth): skipped"; exit 77; }
   command -v xdotool >/dev/null || { echo "xdotool is not installed (apt-get install xdotool): skipped"; exit 77; }
-  KEYS_SH_DISPLAY=1 exec xvfb-run -a -s "-screen 0 1024x768x24" "$0" "$@"
+  # KEYS_SH_SCREEN: the virtual screen's size (a projector's 1920x1080 for the UI scale's test).
+  KEYS_SH_DISPLAY=1 exec xvfb-run -a -s "-screen 0 ${KEYS_SH_SCREEN:-1024x768}x24" "$0" "$@"
 fi
 
 exe=$1
@@ -58,7 +61,15 @@ for step in "$@"; do
     xdotool windowfocus --sync "$wid"
     sleep 0.5
   fi
-  xdotool key --clearmodifiers "$key"
+  case "$key" in
+    size:*) size=${key#size:}; xdotool windowsize "$wid" "${size%x*}" "${size#*x}" ;;
+    move:*) at=${key#move:}; xdotool windowmove "$wid" "${at%,*}" "${at#*,}" ;;
+    sleep:*) sleep "${key#sleep:}"; continue ;;
+    ctrlclick:*)  # ctrl+click at X,Y in the window: ImGui's way into a slider's typed value
+      at=${key#ctrlclick:}
+      xdotool mousemove --window "$wid" "${at%,*}" "${at#*,}" keydown ctrl click 1 keyup ctrl ;;
+    *) xdotool key --clearmodifiers "$key" ;;
+  esac
   [ -z "$want" ] && { sleep 0.3; continue; }
   found=""
   for _ in $(seq 100); do
