@@ -41,9 +41,12 @@
 // subtracted primitives are applied in a sequence that holds every ordering of them, since they
 // may lie along a ray in any order (geometry/csg.h, subtractionSequence).
 //
-// Goldfeather and SCS build each product's surface in a work buffer of their own; its colour is
-// painted for the pass stepper only (the selected layer lit, trimmed pixels the background), so
-// stepping through the passes shows the work buffer's colour, depth and stencil at each step.
+// Goldfeather and SCS build each product's surface in a work buffer of their own, its depth and
+// the primitive each depth came from (the merge draws that primitive there, at exactly that
+// depth, as OpenCSG records IDs); its colour is painted for the pass stepper only (the selected
+// layer lit, trimmed pixels the background), so stepping through the passes shows the work
+// buffer's colour, depth and stencil at each step. Depth is reversed and floating-point where the
+// driver has clip control (lesson 15), every comparison flipped with it.
 // Reading order: render, the two solids, Goldfeather, layered Goldfeather (its depth complexity), SCS;
 // the automatic method (per product SCS or layered Goldfeather, OpenCSG's economies) is in
 // automatic.cpp, the work buffer and the draws in drawing.cpp, the scenes, cameras, options and variants in
