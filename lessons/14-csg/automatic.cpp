@@ -16,11 +16,9 @@
 #include <algorithm>
 
 #include "csg_lesson.h"
-#include "geometry/adjacency.h"
 #include "geometry/bounds.h"
 #include "geometry/fast_shadows.h"
 #include "geometry/shadow_volume.h"
-#include "geometry/weld.h"
 
 namespace stencil::csg_lesson {
 
@@ -123,23 +121,6 @@ bool Csg::reachesPastFar(const Frame& f, int i) const {
   // Its farthest point from the eye along the view axis, projected.
   const glm::vec4 clip = f.projection * glm::vec4(centre.x, centre.y, centre.z - sphere.radius, 1.0f);
   return clip.w > 0.0f && clip.z > clip.w;
-}
-
-// Per primitive, once per scene: whether its mesh is convex (welded, so its faces meet along
-// edges), and its bounding box.
-void Csg::classifyPrimitives(const CsgScene& scene) {
-  if (classifiedFor_ == preparedFor_ && convex_.size() == scene.primitives.size()) return;
-  convex_.clear();
-  boxes_.clear();
-  for (const Primitive& p : scene.primitives) {
-    const WeldResult welded = weldByPosition(p.mesh);
-    const EdgeAdjacency adjacency = buildEdgeAdjacency(welded.mesh.indices, welded.mesh.positions.size());
-    convex_.push_back(isConvex(welded.mesh, adjacency));
-    glm::vec3 low = p.mesh.positions.front(), high = low;
-    for (const glm::vec3& v : p.mesh.positions) low = glm::min(low, v), high = glm::max(high, v);
-    boxes_.emplace_back(low, high);
-  }
-  classifiedFor_ = preparedFor_;
 }
 
 }  // namespace stencil::csg_lesson

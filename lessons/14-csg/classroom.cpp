@@ -1,5 +1,5 @@
 // Lesson 14 around its algorithms: the lesson's own scenes (the demo's two solids, the rounded
-// cube, OpenCSG's grids and rack...), a scene file's csg line, the cameras, options and variants.
+// cube, grids and a rack after OpenCSG's...), a scene file's csg line, the cameras, options and variants.
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>
 
@@ -51,7 +51,7 @@ CsgScene goldfeatherScene(int scene, int op, int side) {
           {"C", makeCube(0.3f), translate(id, {0.55f, 0.55f, 0.55f}), {0.3f, 0.8f, 0.35f}});
       s.expression = "A - (B - C)";
       return s;
-    case 4: {  // OpenCSG's benchmark: a box minus a grid of spheres (5x5: 25 trimmers per target)
+    case 4: {  // a box minus a grid of spheres (5x5: 25 trimmers per target), after OpenCSG's grids
       s.primitives.push_back(
           {"box", makeCube(1.0f), glm::scale(id, {1.3f, 0.4f, 1.3f}), {0.95f, 0.55f, 0.2f}});
       s.expression = "box";
@@ -79,7 +79,7 @@ CsgScene goldfeatherScene(int scene, int op, int side) {
       s.expression = "A - B";
       return s;
     }
-    case 7: {  // OpenCSG's cube rack: a box minus 7x7x7 small boxes, the outer ones cutting its faces
+    case 7: {  // a box minus 7x7x7 small boxes (OpenCSG's cube rack subtracts spheres)
       s.primitives.push_back({"box", makeCube(0.9f), id, {0.95f, 0.55f, 0.2f}});
       s.expression = "box";
       const Mesh cube = makeCube(0.1f);
@@ -94,7 +94,7 @@ CsgScene goldfeatherScene(int scene, int op, int side) {
       }
       return s;
     }
-    case 8: {  // OpenCSG's 3x3x3 grid: a box minus 27 spheres, the outer ones cutting its faces
+    case 8: {  // a box minus 27 spheres, the outer ones cutting its faces (after OpenCSG's)
       s.primitives.push_back({"box", makeCube(0.9f), id, {0.95f, 0.55f, 0.2f}});
       s.expression = "box";
       const Mesh sphere = makeSphere(0.32f, 24, 12);

@@ -63,7 +63,6 @@ class Csg final : public Lesson {
   // ---- automatic.cpp: per product the method that is right for it, with OpenCSG's economies ------
   void automatic(Frame& f, const SumOfProducts& sop);
   void scsUntilUnchanged(Frame& f, const CsgProduct& p);
-  void classifyPrimitives(const CsgScene& scene);
   bool scissorTo(const Frame& f, int i) const;
 
   // ---- drawing.cpp: the work buffer and the draws ------------------------------------------------
@@ -94,11 +93,8 @@ class Csg final : public Lesson {
   std::vector<glm::vec3> colours_;
   std::vector<glm::mat4> models_;
   std::string preparedFor_;
-  // Per primitive, whether its mesh is convex (prepare(), and automatic.cpp again with) its
-  // object-space bounding box (for the scene prepare() made, classifiedFor_).
-  std::vector<bool> convex_;
-  std::vector<std::pair<glm::vec3, glm::vec3>> boxes_;
-  std::string classifiedFor_;
+  std::vector<bool> convex_;  // per primitive, from its mesh (isConvex)
+  std::vector<std::pair<glm::vec3, glm::vec3>> boxes_;  // per primitive, its object-space bounding box
   // The work buffer: depth and stencil, the pass stepper's colour, and per pixel the primitive
   // whose fragment wrote the depth (its index + 1; 0 none), which the merge draws alone.
   GLuint work_ = 0, workDepth_ = 0, workColour_ = 0, workPrimitive_ = 0;

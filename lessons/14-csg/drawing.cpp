@@ -76,10 +76,14 @@ CsgTree Csg::prepare(const CsgScene& scene, double time) {
     meshes_.clear();
     colours_.clear();
     convex_.clear();
+    boxes_.clear();
     for (const Primitive& p : scene.primitives) {
       meshes_.push_back(std::make_unique<GpuMesh>(p.mesh));
       colours_.push_back(p.colour);
       convex_.push_back(convexMesh(p.mesh));
+      glm::vec3 low = p.mesh.positions.front(), high = low;
+      for (const glm::vec3& v : p.mesh.positions) low = glm::min(low, v), high = glm::max(high, v);
+      boxes_.emplace_back(low, high);
     }
     preparedFor_ = scene.expression;
   }

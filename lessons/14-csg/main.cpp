@@ -87,10 +87,8 @@ void Csg::render(Frame& f) {
     twoSolidsMethod(f, scene, f.option("op"));
   else if (method == kScs)
     scs(f, normalize(tree));
-  else if (method == kAutomatic) {
-    classifyPrimitives(scene);
+  else if (method == kAutomatic)
     automatic(f, normalize(tree));
-  }
   else
     goldfeather(f, normalize(tree), method == kLayered);
 
