@@ -29,8 +29,7 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
                            "merge_passes"})
     f.count(name, 0);
   workBuffer(f.size);
-  merge_.set("productDepth", 0);
-  merge_.set("tolerance", 1e-6f);
+  mergeInputs();
   for (const CsgProduct& p : sop.products) {
     const auto isConvex = [&](int i) { return convex_[static_cast<std::size_t>(i)]; };
     if (std::all_of(p.intersected.begin(), p.intersected.end(), isConvex) &&

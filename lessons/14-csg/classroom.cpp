@@ -290,7 +290,7 @@ LessonInfo lessonInfo() {
        "SCS on the box minus 25 spheres: a sequence of 25 * 24 + 1 = 601 subtractions",
        {{"method", kScs}, {"scene", 4}}},
       {"coincident",
-       "A - B where B's top face lies in A's: z-fighting decides pixel by pixel",
+       "A - B where B's top face lies in A's: tied depths, and a face at the surface's depth is not behind it",
        {{"method", kGoldfeather}, {"scene", 5}}},
       {"coincident-grown",
        "the same with B 0.01 taller: a clean pocket",
@@ -303,6 +303,7 @@ LessonInfo lessonInfo() {
        {{"method", kGoldfeather}, {"scene", 4}}},
       {"layered-grid", "the box minus 25 spheres, layered", {{"method", kLayered}, {"scene", 4}}},
   };
+  info.reversedDepth = true;  // a float depth buffer, reversed, where the driver has clip control
   info.passes = {"surface", "count",  "keep",      "far",      "layers",
                  "select",  "parity", "intersect", "subtract", "merge"};
   info.camera.target = {0.2f, 0.2f, 0.2f};

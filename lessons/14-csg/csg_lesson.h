@@ -10,6 +10,7 @@
 
 #include "geometry/csg.h"
 #include "geometry/scene.h"
+#include "gl/depth_mapping.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
 #include "gl/shader.h"
@@ -68,16 +69,18 @@ class Csg final : public Lesson {
   void workBuffer(glm::ivec2 size);
   CsgTree prepare(const CsgScene& scene, double time);
   static bool subtracted(const CsgProduct& p, int primitive);
-  enum class Paint { Depth, Lit, Merged };
+  enum class Paint { Depth, Selected, Merged };
   void drawTargets(const CsgProduct& p, const std::vector<int>& targets, Paint paint);
   void setLighting(const Program& p, const Frame& f) const;
   void drawDepth(int i);
   void drawShaded(int i);
+  void drawSelected(int i);
   void drawMerged(int i);
+  void mergeInputs();
   void frontFace(int i);
   void drawQuad(const glm::vec4& colour, float depth);
   // Back to the far plane, the background's colour where colour is written.
-  void farQuad() { drawQuad(kBackground, 1.0f); }
+  void farQuad() { drawQuad(kBackground, static_cast<float>(depth_.farthest)); }
 
   // ---- oracle.cpp: the test hook -----------------------------------------------------------------
   void checkAgainstRayCast(Frame& f, const CsgScene& scene, const CsgTree& tree, int method) const;
@@ -88,13 +91,21 @@ class Csg final : public Lesson {
   GpuMesh quad_;
   std::vector<std::unique_ptr<GpuMesh>> meshes_;
   std::vector<glm::vec3> colours_;
-  std::vector<bool> convex_;  // per primitive, from its mesh (isConvex)
   std::vector<glm::mat4> models_;
   std::string preparedFor_;
+  std::vector<bool> convex_;  // per primitive, from its mesh (isConvex)
   std::vector<std::pair<glm::vec3, glm::vec3>> boxes_;  // per primitive, its object-space bounding box
-  GLuint work_ = 0, workDepth_ = 0, workColour_ = 0;
+  // The work buffer: depth and stencil, the pass stepper's colour, and per pixel the primitive
+  // whose fragment wrote the depth (its index + 1; 0 none), which the merge draws alone.
+  GLuint work_ = 0, workDepth_ = 0, workColour_ = 0, workPrimitive_ = 0;
   glm::ivec2 workSize_{0};
   bool mirroredView_ = false;  // this frame's view matrix has a negative determinant
+  DepthMapping depth_;         // this frame's: its depth tests, clear depth and projection
+  // The depth tests that pass behind the buffer's depth (GL_GREATER, GL_GEQUAL; GL_LESS and
+  // GL_LEQUAL in reversed depth, where nearer is greater) and the nearest depth there is.
+  GLenum further() const { return depth_.less == GL_LESS ? GL_GREATER : GL_LESS; }
+  GLenum furtherOrEqual() const { return depth_.lequal == GL_LEQUAL ? GL_GEQUAL : GL_LEQUAL; }
+  double nearest() const { return 1.0 - depth_.farthest; }
 };
 
 // ---- classroom.cpp ------------------------------------------------------------------------------

@@ -27,16 +27,21 @@ Csg::~Csg() {
   if (work_) glDeleteFramebuffers(1, &work_);
   if (workDepth_) glDeleteTextures(1, &workDepth_);
   if (workColour_) glDeleteRenderbuffers(1, &workColour_);
+  if (workPrimitive_) glDeleteTextures(1, &workPrimitive_);
 }
 
-// The work buffer: a depth and stencil texture the size of the frame (the merge reads the
-// depth), and a colour the passes paint the surface into for the pass stepper.
+// The work buffer: a depth and stencil texture the size of the frame, 32-bit float (the merge reads
+// the depth), a colour the passes paint the surface into for the pass stepper, and an unsigned
+// integer texture (the merge reads it) where the fragment that writes the depth writes its
+// primitive's index + 1 (drawSelected). glClear leaves that one undefined: it is read only where
+// a target's fragment wrote the depth.
 void Csg::workBuffer(glm::ivec2 size) {
   if (work_ && workSize_ == size) return;
   if (!work_) {
     glGenFramebuffers(1, &work_);
     glGenTextures(1, &workDepth_);
     glGenRenderbuffers(1, &workColour_);
+    glGenTextures(1, &workPrimitive_);
   }
   workSize_ = size;
   glBindTexture(GL_TEXTURE_2D, workDepth_);
@@ -46,12 +51,20 @@ void Csg::workBuffer(glm::ivec2 size) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_NONE);
   glBindTexture(GL_TEXTURE_2D, 0);
+  glBindTexture(GL_TEXTURE_2D, workPrimitive_);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32UI, size.x, size.y, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glBindTexture(GL_TEXTURE_2D, 0);
   glBindRenderbuffer(GL_RENDERBUFFER, workColour_);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size.x, size.y);
   glBindRenderbuffer(GL_RENDERBUFFER, 0);
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, workDepth_, 0);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, workColour_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, workPrimitive_, 0);
+  const GLenum drawBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, drawBuffers);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw std::runtime_error("14-csg: the work buffer is incomplete");
 }
@@ -88,15 +101,16 @@ bool Csg::subtracted(const CsgProduct& p, int primitive) {
 }
 
 // Draws the target faces of `targets` in the product: front faces of the intersected ones,
-// back faces of the subtracted ones; in white (Depth: for the depth and stencil alone), lit, or
-// lit where the work depth says the fragment is the product's surface (Merged).
+// back faces of the subtracted ones; in white (Depth: for the depth and stencil alone), lit with
+// the primitive recorded in the work buffer (Selected), or lit where the work buffer says the
+// fragment is the product's surface (Merged).
 void Csg::drawTargets(const CsgProduct& p, const std::vector<int>& targets, Paint paint) {
   for (int x : targets) {
     glCullFace(subtracted(p, x) ? GL_FRONT : GL_BACK);
     if (paint == Paint::Merged)
       drawMerged(x);
-    else if (paint == Paint::Lit)
-      drawShaded(x);
+    else if (paint == Paint::Selected)
+      drawSelected(x);
     else
       drawDepth(x);
   }
@@ -122,11 +136,29 @@ void Csg::drawShaded(int i) {
   light_.set("colour", colours_[static_cast<std::size_t>(i)]);
   meshes_[static_cast<std::size_t>(i)]->draw();
 }
-void Csg::drawMerged(int i) {
+// Into the work buffer: lit, every fragment kept (the depth and stencil tests choose), its
+// primitive written beside its depth.
+void Csg::drawSelected(int i) {
+  merge_.set("merging", 0);
+  merge_.set("primitive", i + 1);
   merge_.set("model", models_[static_cast<std::size_t>(i)]);
   frontFace(i);
   merge_.set("colour", colours_[static_cast<std::size_t>(i)]);
   meshes_[static_cast<std::size_t>(i)]->draw();
+}
+// Into the frame: lit where the work buffer holds this primitive at exactly this depth.
+void Csg::drawMerged(int i) {
+  merge_.set("merging", 1);
+  merge_.set("primitive", i + 1);
+  merge_.set("model", models_[static_cast<std::size_t>(i)]);
+  frontFace(i);
+  merge_.set("colour", colours_[static_cast<std::size_t>(i)]);
+  meshes_[static_cast<std::size_t>(i)]->draw();
+}
+// The merge shader's inputs: the work buffer's depth on texture unit 0, its primitives on 1.
+void Csg::mergeInputs() {
+  merge_.set("productDepth", 0);
+  merge_.set("productPrimitive", 1);
 }
 
 // A mirroring model (a negative determinant: scale -1 1 1, OpenSCAD's mirror()) or a mirrored view
@@ -137,9 +169,11 @@ void Csg::frontFace(int i) {
   glFrontFace(mirrored ? GL_CW : GL_CCW);
 }
 
-// A full-screen quad at window depth `depth` (0 near, 1 far).
+// A full-screen quad at window depth `depth` (0 near and 1 far; reversed, 1 near and 0 far, where
+// window depth is the normalized device z itself).
 void Csg::drawQuad(const glm::vec4& colour, float depth) {
-  flat_.set("transform", glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 2.0f * depth - 1.0f)));
+  const float z = depth_.less == GL_LESS ? 2.0f * depth - 1.0f : depth;
+  flat_.set("transform", glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, z)));
   flat_.set("colour", colour);
   const bool culling = glIsEnabled(GL_CULL_FACE);
   glDisable(GL_CULL_FACE);  // the quad covers every pixel whichever faces are being culled

@@ -41,9 +41,12 @@
 // subtracted primitives are applied in a sequence that holds every ordering of them, since they
 // may lie along a ray in any order (geometry/csg.h, subtractionSequence).
 //
-// Goldfeather and SCS build each product's surface in a work buffer of their own; its colour is
-// painted for the pass stepper only (the selected layer lit, trimmed pixels the background), so
-// stepping through the passes shows the work buffer's colour, depth and stencil at each step.
+// Goldfeather and SCS build each product's surface in a work buffer of their own, its depth and
+// the primitive each depth came from (the merge draws that primitive there, at exactly that
+// depth, as OpenCSG records IDs); its colour is painted for the pass stepper only (the selected
+// layer lit, trimmed pixels the background), so stepping through the passes shows the work
+// buffer's colour, depth and stencil at each step. Depth is reversed and floating-point where the
+// driver has clip control (lesson 15), every comparison flipped with it.
 // Reading order: render, the two solids, Goldfeather, layered Goldfeather (its depth complexity), SCS;
 // the automatic method (per product SCS or layered Goldfeather, OpenCSG's economies) is in
 // automatic.cpp, the work buffer and the draws in drawing.cpp, the scenes, cameras, options and variants in
@@ -63,12 +66,18 @@ void Csg::render(Frame& f) {
   const CsgTree tree = prepare(scene, f.time);
   mirroredView_ = glm::determinant(glm::mat3(f.view)) < 0.0f;  // a mirrored camera
 
+  // The depth mapping, before anything is cleared or drawn: reversed float depth where the driver
+  // has clip control (lesson 15), so that a depth is held to about 2^-24 of its distance at every
+  // distance and surfaces far from a near plane close to the eye stay apart; nearer is then
+  // greater, and every comparison below flips (depth_.less, further()...).
+  depth_ = depthMappingOf(f);
+  if (f.reversedDepth) glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // window depth = clip z / w
   glClearColor(kBackground.r, kBackground.g, kBackground.b, kBackground.a);
-  glClearDepth(1.0);
+  glClearDepth(depth_.farthest);
   glClearStencil(0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   glEnable(GL_CULL_FACE);  // a solid's front or back faces, one at a time
-  const glm::mat4 viewProjection = f.projection * f.view;
+  const glm::mat4 viewProjection = depth_.projection * f.view;
   for (Program* p : {&light_, &depthOnly_, &merge_}) p->set("viewProjection", viewProjection);
   setLighting(light_, f);
   setLighting(merge_, f);
@@ -90,6 +99,8 @@ void Csg::render(Frame& f) {
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glClearDepth(1.0);
+  if (f.reversedDepth) glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);  // GL's default mapping
   if (f.on("oracle")) checkAgainstRayCast(f, scene, tree, method);
 }
 
@@ -103,7 +114,7 @@ void Csg::keepSurface(Frame& f, int x, GLenum faces, int s, bool wantInside, GLu
   // 1. The surface's nearest face into the depth buffer, where no surface is kept yet.
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // depth only
   glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);  // the nearest of x's chosen faces
+  glDepthFunc(depth_.less);  // the nearest of x's chosen faces
   glDepthMask(GL_TRUE);
   glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_EQUAL, 0, tagged);                  // not where the nearer surface was kept
@@ -156,7 +167,7 @@ void Csg::twoSolidsMethod(Frame& f, const CsgScene&, int op) {
   if (op == kUnion) {
     // Both solids, the nearer surface wins; the stencil only records whose surface it is.
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    glDepthFunc(depth_.less);
     glEnable(GL_STENCIL_TEST);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);  // the last surface written is the nearest
     glCullFace(GL_BACK);
@@ -191,8 +202,7 @@ void Csg::goldfeather(Frame& f, const SumOfProducts& sop, bool layered) {
   for (const char* name : {"select_passes", "parity_passes", "far_passes", "merge_passes", "layers"})
     f.count(name, 0);
   workBuffer(f.size);
-  merge_.set("productDepth", 0);
-  merge_.set("tolerance", 1e-6f);
+  mergeInputs();
   for (const CsgProduct& product : sop.products) {
     std::vector<int> targets = product.intersected;
     targets.insert(targets.end(), product.subtracted.begin(), product.subtracted.end());
@@ -230,8 +240,9 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
   glStencilMask(0xFF);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   // 1. Select: the layer-th fragment drawn at each pixel. Every fragment INCRs the stencil, and
-  // only the one that finds it EQUAL to layer writes its depth (and its colour: the work
-  // buffer's colour is no part of the method, it shows the surface to the pass stepper).
+  // only the one that finds it EQUAL to layer writes its depth and its primitive (and its
+  // colour: the work buffer's colour is no part of the method, it shows the surface to the pass
+  // stepper).
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_ALWAYS);  // in draw order, not depth order: every fragment is some layer
   glDepthMask(GL_TRUE);
@@ -244,7 +255,7 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
       GLuint query = 0;
       glGenQueries(1, &query);
       glBeginQuery(GL_SAMPLES_PASSED, query);
-      drawTargets(p, targets, Paint::Lit);
+      drawTargets(p, targets, Paint::Selected);
       glEndQuery(GL_SAMPLES_PASSED);
       GLuint64 n = 0;
       glGetQueryObjectui64v(query, GL_QUERY_RESULT, &n);
@@ -252,7 +263,7 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
       selected = n;
     });
   } else {
-    drawTargets(p, targets, Paint::Lit);
+    drawTargets(p, targets, Paint::Selected);
   }
   f.count("select_passes");
   f.pass("select");
@@ -275,7 +286,7 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
   for (std::size_t i = 0; i < trimmers.size(); ++i) {
     const int y = trimmers[i];
     if (f.on("stencil")) {
-      glDepthFunc(GL_GREATER);
+      glDepthFunc(further());
       glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
       glDepthMask(GL_FALSE);  // counted, not drawn
       glStencilMask(1u << bit);
@@ -308,16 +319,21 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
   return true;
 }
 
-// Merge: the targets drawn into the frame where they are the trimmed surface (the shader
-// compares with the work depth), the nearest of all products winning; the stencil records
-// the primitive (its index modulo 255, + 1).
+// Merge: the targets drawn into the frame where they are the trimmed surface, the nearest of all
+// products winning; the stencil records the primitive (its index modulo 255, + 1). The shader
+// keeps a fragment only where the work buffer recorded its primitive and its depth exactly: the
+// same triangle drawn again lands on the same depth (gl_Position is invariant), and another
+// target's face crossing the surface there, however close in depth, is not the surface (OpenCSG
+// records the primitive's ID the same way).
 void Csg::mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets) {
   glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer());
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glDepthFunc(GL_LESS);
+  glDepthFunc(depth_.less);
   glDepthMask(GL_TRUE);
   glStencilMask(0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, workPrimitive_);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, workDepth_);
   for (int x : targets) {
@@ -325,6 +341,9 @@ void Csg::mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& 
     drawTargets(p, {x}, Paint::Merged);
   }
   glBindTexture(GL_TEXTURE_2D, 0);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glActiveTexture(GL_TEXTURE0);
   f.count("merge_passes");
   f.pass("merge");
 }
@@ -382,8 +401,7 @@ void Csg::scs(Frame& f, const SumOfProducts& sop) {
   for (const char* name : {"sequence_length", "subtraction_passes", "clip_passes", "merge_passes"})
     f.count(name, 0);
   workBuffer(f.size);
-  merge_.set("productDepth", 0);
-  merge_.set("tolerance", 1e-6f);
+  mergeInputs();
   for (const CsgProduct& p : sop.products) {
     scsEnter(f, p);
     // 2. The subtraction sequence.
@@ -411,17 +429,17 @@ void Csg::scsEnter(Frame& f, const CsgProduct& p) {
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_STENCIL_TEST);
   glStencilMask(0xFF);
-  glClearDepth(0.0);  // the furthest front face wins: start at the near plane
+  glClearDepth(nearest());  // the furthest front face wins: start at the near plane
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-  glClearDepth(1.0);
+  glClearDepth(depth_.farthest);
   // 1. The intersected primitives' front faces, the furthest kept: where the ray has entered
   // them all, if it is inside them all there.
-  glDepthFunc(GL_GREATER);
+  glDepthFunc(further());
   glDepthMask(GL_TRUE);
   glStencilFunc(GL_ALWAYS, 0, 0);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glCullFace(GL_BACK);
-  for (int a : p.intersected) drawShaded(a);
+  for (int a : p.intersected) drawSelected(a);
   clipByIntersection(f, p);
   f.pass("intersect");
 }
@@ -437,14 +455,14 @@ void Csg::scsEnter(Frame& f, const CsgProduct& p) {
 void Csg::scsSubtract(Frame& f, int s, GLuint query, bool clean) {
   glStencilMask(0xFF);
   if (!clean) glClear(GL_STENCIL_BUFFER_BIT);
-  glDepthFunc(GL_GEQUAL);  // s's front face behind the surface, or on it: the surface is not inside s
+  glDepthFunc(furtherOrEqual());  // s's front face behind the surface, or on it: not inside s
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthMask(GL_FALSE);
   glStencilFunc(GL_ALWAYS, 1, 0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   glCullFace(GL_BACK);
   drawDepth(s);
-  glDepthFunc(GL_GREATER);  // elsewhere, its back face behind it: the surface is inside s
+  glDepthFunc(further());  // elsewhere, its back face behind it: the surface is inside s
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);  // it moves to that back face
   glStencilFunc(GL_EQUAL, 0, 0xFF);
@@ -454,7 +472,7 @@ void Csg::scsSubtract(Frame& f, int s, GLuint query, bool clean) {
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glCullFace(GL_FRONT);
   if (query) glBeginQuery(GL_SAMPLES_PASSED, query);
-  drawShaded(s);
+  drawSelected(s);
   if (query) glEndQuery(GL_SAMPLES_PASSED);
   f.count("subtraction_passes", 2);
 }
@@ -466,7 +484,7 @@ void Csg::scsSubtract(Frame& f, int s, GLuint query, bool clean) {
 void Csg::clipByIntersection(Frame& f, const CsgProduct& p) {
   glStencilMask(0xFF);
   glClear(GL_STENCIL_BUFFER_BIT);
-  glDepthFunc(GL_GEQUAL);  // the back face behind the surface: the surface is before it leaves
+  glDepthFunc(furtherOrEqual());  // the back face behind the surface: the surface is before it leaves
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthMask(GL_FALSE);
   glStencilFunc(GL_ALWAYS, 0, 0);

@@ -34,7 +34,7 @@ void Csg::checkAgainstRayCast(Frame& f, const CsgScene& scene, const CsgTree& tr
   std::vector<int> primitive(w * h);
   for (std::size_t i = 0; i < w * h; ++i) {
     const std::size_t row = (h - 1 - i / w) * w + i % w;  // GL's rows bottom up, the ray cast's top down
-    depth[i] = depthRows[row];
+    depth[i] = f.reversedDepth ? 1.0f - depthRows[row] : depthRows[row];  // the ray cast's mapping
     const std::uint8_t s = stencilRows[row];
     if (method == kTwoSolids)
       primitive[i] = (s & kKeptA) ? 0 : (s & kKeptB) ? 1 : kNoSurface;
@@ -47,9 +47,9 @@ void Csg::checkAgainstRayCast(Frame& f, const CsgScene& scene, const CsgTree& tr
   glGetIntegerv(GL_SUBPIXEL_BITS, &subpixelBits);
   const float snap = std::ldexp(1.0f, -std::max(subpixelBits, 4));
   const std::vector<bool> edges = csgEdgePixels(primitives, f.projection * f.view, f.size, snap);
-  // Depth in window units: a few of the 24-bit buffer's steps (2^-24: its rounding, the ray
-  // cast's float rounding near 1, the rasterizer's interpolation), plus the surface's slope over
-  // the snapping.
+  // Depth in window units of GL's mapping: a few steps of 2^-24 (the 24-bit buffer's rounding, or
+  // a reversed float depth's taken from 1; the ray cast's float rounding near 1; the rasterizer's
+  // interpolation), plus the surface's slope over the snapping.
   const CsgReport r = compareCsg(expected, depth, primitive, edges, 4.0f * std::ldexp(1.0f, -24), snap);
   f.count("oracle_pixels", r.pixels);
   f.count("oracle_primitive_disagreements", r.primitiveDisagreements);

@@ -1,13 +1,18 @@
 #version 330 core
-// Goldfeather's merge: a primitive drawn again into the frame, kept only where its fragment is
-// the product's surface (the depth the trimming left in productDepth at this pixel), then shaded
-// like common/light.frag with the side the eye sees lit. The depth test against the frame keeps
-// the nearest of every product's surfaces: their union.
+// Lesson 14's surfaces, lit like common/light.frag with the side the eye sees lit. Two uses:
+// selecting (merging 0): into the work buffer, every fragment kept, its primitive written beside
+// its depth, so the work buffer records which primitive's fragment the trimming keeps at each
+// pixel; merging (1): a target drawn again into the frame, kept only where it is the product's
+// surface: the work buffer holds its primitive at exactly its depth (the same triangle drawn
+// again lands on the same depth: gl_Position is invariant). The depth test against the frame
+// keeps the nearest of every product's surfaces: their union.
 in vec3 worldPosition;
 in vec3 worldNormal;
 
-uniform sampler2D productDepth;  // the product's trimmed surface, window depth per pixel
-uniform float tolerance;         // the same fragment drawn twice lands within this
+uniform bool merging;
+uniform int primitive;                // this primitive's index + 1
+uniform sampler2D productDepth;       // the product's trimmed surface, window depth per pixel
+uniform usampler2D productPrimitive;  // and the primitive whose fragment wrote that depth
 uniform vec3 colour;
 uniform vec3 ambient;
 uniform vec4 light;
@@ -15,10 +20,17 @@ uniform vec3 lightColour;
 uniform vec3 eye;
 uniform float shininess;
 
-out vec4 fragColour;
+layout(location = 0) out vec4 fragColour;
+layout(location = 1) out uint fragPrimitive;
 
 void main() {
-  if (abs(texelFetch(productDepth, ivec2(gl_FragCoord.xy), 0).r - gl_FragCoord.z) > tolerance) discard;
+  if (merging) {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    if (texelFetch(productPrimitive, pixel, 0).r != uint(primitive) ||
+        texelFetch(productDepth, pixel, 0).r != gl_FragCoord.z)
+      discard;
+  }
+  fragPrimitive = uint(primitive);
   vec3 n = normalize(worldNormal);
   if (!gl_FrontFacing) n = -n;  // a subtracted primitive's back face is seen from inside
   vec3 toLight = light.xyz - light.w * worldPosition;

@@ -66,16 +66,15 @@ TEST(Csg, TheRayCastCatchesTheFailures) {
   }
 }
 
-TEST(Csg, CoincidentFacesFightUnlessGrown) {
-  // B's top face in A's top face: the two are rasterized from different triangles, and which is
-  // nearer is rounding's choice, pixel by pixel, for every method; B grown 0.01 above A agrees.
+TEST(Csg, CoincidentFacesAgreeOnceGrown) {
+  // B's top face in A's top face: the two are rasterized from different triangles, and where
+  // their depths tie is rounding's choice (in reversed float depth on llvmpipe they tie almost
+  // everywhere: 0 / 0 / 6 pixels off edges for methods 1 / 2 / 3, against 66 / 66 / 206 with GL's
+  // mapping), so that picture is not checked; B grown 0.01 above A agrees in every method.
   for (const char* method : {"1", "2", "3"}) {
-    const auto r =
-        run("coincident", std::string("--variant coincident --set oracle=1 --set method=") + method, true);
-    if (!r) GTEST_SKIP() << "no GL context";
-    EXPECT_GT(offEdges(*r), 10) << "method " << method;
     const auto grown =
         run("grown", std::string("--variant coincident-grown --set oracle=1 --set method=") + method, true);
+    if (!grown) GTEST_SKIP() << "no GL context";
     expectRayCastAgrees(*grown, std::string("grown, method ") + method);
   }
 }
