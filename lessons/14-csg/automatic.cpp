@@ -92,31 +92,31 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p) {
   mergeIntoFrame(f, p, targets);
 }
 
-// The scissor rectangle of primitive i's bounding sphere (its object-space box's corners at its
-// model); false when the sphere is wholly off screen.
-bool Csg::scissorTo(const Frame& f, int i) const {
+// Primitive i's bounding sphere in world space: its object-space box's corners at its model.
+BoundingSphere Csg::worldSphereOf(int i) const {
   const auto& [low, high] = boxes_[static_cast<std::size_t>(i)];
   const glm::mat4& model = models_[static_cast<std::size_t>(i)];
   std::vector<glm::vec3> corners;
   for (int c = 0; c < 8; ++c)
     corners.emplace_back(model * glm::vec4((c & 1) ? high.x : low.x, (c & 2) ? high.y : low.y,
                                            (c & 4) ? high.z : low.z, 1.0f));
-  const BoundingSphere sphere = boundingSphereOf(corners);
+  return boundingSphereOf(corners);
+}
+
+// The scissor rectangle of primitive i's bounding sphere; false when it is wholly off screen.
+bool Csg::scissorTo(const Frame& f, int i) const {
+  const BoundingSphere sphere = worldSphereOf(i);
   const ScissorRect r = lightScissor(sphere.centre, sphere.radius, f.projection * f.view, f.size);
   if (r.width <= 0 || r.height <= 0) return false;
   glScissor(r.x, r.y, r.width, r.height);
   return true;
 }
 
-// Whether primitive i's bounding sphere reaches past the far plane (which then cuts its back faces).
+// Whether primitive i's bounding sphere reaches past Frame::projection's far plane (which then cuts
+// its back faces). With reversed depth the far plane is at infinity and this answer is only
+// conservative: a clear too many, never one too few.
 bool Csg::reachesPastFar(const Frame& f, int i) const {
-  const auto& [low, high] = boxes_[static_cast<std::size_t>(i)];
-  const glm::mat4& model = models_[static_cast<std::size_t>(i)];
-  std::vector<glm::vec3> corners;
-  for (int c = 0; c < 8; ++c)
-    corners.emplace_back(model * glm::vec4((c & 1) ? high.x : low.x, (c & 2) ? high.y : low.y,
-                                           (c & 4) ? high.z : low.z, 1.0f));
-  const BoundingSphere sphere = boundingSphereOf(corners);
+  const BoundingSphere sphere = worldSphereOf(i);
   const glm::vec3 centre = glm::vec3(f.view * glm::vec4(sphere.centre, 1.0f));
   // Its farthest point from the eye along the view axis, projected.
   const glm::vec4 clip = f.projection * glm::vec4(centre.x, centre.y, centre.z - sphere.radius, 1.0f);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/bounds.h"
 #include "geometry/csg.h"
 #include "geometry/scene.h"
 #include "gl/depth_mapping.h"
@@ -57,6 +58,7 @@ class Csg final : public Lesson {
   void scs(Frame& f, const SumOfProducts& sop);
   void scsEnter(Frame& f, const CsgProduct& p);
   void scsSubtract(Frame& f, int s, GLuint query = 0, bool clean = false);
+  BoundingSphere worldSphereOf(int i) const;
   bool reachesPastFar(const Frame& f, int i) const;
   void clipByIntersection(Frame& f, const CsgProduct& p);
 

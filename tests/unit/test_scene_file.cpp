@@ -168,9 +168,12 @@ TEST(SceneFile, ASunBelowTheHorizonIsReadOnlyForAShadowProfile) {
 TEST(SceneFile, TheDocumentedExampleReads) {
   std::ifstream in(std::filesystem::path(DOCS_DIR) / "scenes.md");
   const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto begin = doc.find("```\n"), end = doc.find("```", begin + 4);
+  const std::string fence = "```text\n";  // the page's first block: the example
+  const auto begin = doc.find(fence);
+  ASSERT_NE(begin, std::string::npos);
+  const auto end = doc.find("```", begin + fence.size());
   ASSERT_NE(end, std::string::npos);
-  std::string example = doc.substr(begin + 4, end - begin - 4);
+  std::string example = doc.substr(begin + fence.size(), end - begin - fence.size());
   const std::string model = "models/bunny.obj";
   ASSERT_NE(example.find(model), std::string::npos);
   example.replace(example.find(model), model.size(), "meshes/split-cube.obj");
