@@ -115,8 +115,12 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
       if (std::abs(cl.time) > kMaxTime)
         throw UsageError("--time must be within -1e6..1e6 seconds, got '" + t + "'");
     } else if (flag == "--frames") {
-      cl.frames = parseNumber<int>(flag, value());
-      if (*cl.frames < 1) throw UsageError("--frames must be at least 1");
+      const std::string n = value();
+      const long long frames = parseNumber<long long>(flag, n);
+      if (frames < 1 || frames > std::numeric_limits<int>::max())
+        throw UsageError("--frames must be between 1 and " + std::to_string(std::numeric_limits<int>::max()) +
+                         ", got '" + n + "'");
+      cl.frames = static_cast<int>(frames);
     } else if (flag == "--variant") {
       cl.variant = value();
       if (cl.variant.empty()) throw UsageError("unknown variant ''; --list-variants shows them");
