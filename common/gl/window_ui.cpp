@@ -49,7 +49,8 @@ struct WindowState {
   bool sayDepthRange = false;                      // say the depth view's legend once it is shown
   float uiScale = 1.0f;                            // --ui-scale, the monitor's, or + and -
   bool scaleChanged = true;                        // the fonts and sizes are rebuilt before the next frame
-  bool escapeEdits = false;                        // Esc ended a typed edit: it does not quit
+  std::vector<int> keysPressed = {};               // since the panel's last frame (replayImGuiTaps)
+  bool editEnding = false;                         // Esc ended a typed edit that ImGui has not yet closed
   int sayCountsAfter = -1;                         // say the counts new in this frame (after a key changed an option)
   std::vector<std::string> countsBefore = {};      // the count names before the option changed
   FrameRate rate = {};
@@ -173,14 +174,39 @@ void setUiScale(WindowState& st, float scale) {
   st.scaleChanged = st.sayLayout = true;
 }
 
+// ImGui before 1.87 reads keys as held or not when its frame starts, so a key pressed and
+// released between two frames (a short tap at a few frames a second) never reaches it: Esc would
+// not end a typed edit. Each key pressed since the last frame is held for that frame, then put back
+// as it is.
+void replayImGuiTaps([[maybe_unused]] GLFWwindow* w, WindowState& st, [[maybe_unused]] bool frameStarts) {
+#if IMGUI_VERSION_NUM < 18700
+  ImGuiIO& io = ImGui::GetIO();
+  for (int key : st.keysPressed)
+    if (key >= 0 && key < IM_ARRAYSIZE(io.KeysDown))
+      io.KeysDown[key] = frameStarts || glfwGetKey(w, key) == GLFW_PRESS;
+  io.KeyCtrl = io.KeysDown[GLFW_KEY_LEFT_CONTROL] || io.KeysDown[GLFW_KEY_RIGHT_CONTROL];
+  io.KeyShift = io.KeysDown[GLFW_KEY_LEFT_SHIFT] || io.KeysDown[GLFW_KEY_RIGHT_SHIFT];
+  io.KeyAlt = io.KeysDown[GLFW_KEY_LEFT_ALT] || io.KeysDown[GLFW_KEY_RIGHT_ALT];
+#endif
+  if (frameStarts) return;
+  st.keysPressed.clear();
+  // WantTextInput says what the frame before this one wanted: the field is closed once it is false.
+  if (!ImGui::GetIO().WantTextInput) st.editEnding = false;
+}
+
 void onKey(GLFWwindow* w, int key, int, int action, int mods) {
   if (action != GLFW_PRESS) return;
   WindowState& st = stateOf(w);
+  st.keysPressed.push_back(key);
   // While a panel field takes typed text (a slider ctrl-clicked to type a number) the keys are
   // the field's, Esc included: it ends the edit. Otherwise Esc quits and the other keys are the
   // lesson's.
-  if (ImGui::GetIO().WantTextInput) {
-    if (key == GLFW_KEY_ESCAPE) say(st, "edit cancelled (Esc again quits)");
+  // The keys after that Esc, before the panel's next frame closes the field, are the lesson's.
+  if (ImGui::GetIO().WantTextInput && !st.editEnding) {
+    if (key == GLFW_KEY_ESCAPE) {
+      say(st, "edit cancelled (Esc again quits)");
+      st.editEnding = true;
+    }
     return;
   }
   if (key == GLFW_KEY_ESCAPE) {
@@ -699,11 +725,13 @@ int runWindow(Session& s) {
 
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
+      replayImGuiTaps(window, st, true);
       ImGui::NewFrame();
       PanelFit fit;
       if (st.panel) fit = drawPanel(window, st, static_cast<float>(wh));
       if (st.sayCountsAfter >= 0) --st.sayCountsAfter;
       ImGui::Render();
+      replayImGuiTaps(window, st, false);
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       glViewport(0, 0, w, h);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
