@@ -384,7 +384,7 @@ Image countPicture(const Image& stencil, bool saturates) {
   return out;
 }
 
-Image stencilBitPlanes(const Image& stencil) {
+Image stencilBitPlanes(const Image& stencil, float labelScale) {
   const int w = stencil.width, h = stencil.height, gap = 2;
   Image out(4 * w + 3 * gap, 2 * h + gap, 4);
   fillRect(out, 0, 0, out.width, out.height, {128, 128, 128});
@@ -396,7 +396,7 @@ Image stencilBitPlanes(const Image& stencil) {
         fillRect(out, ox + px, oy + py, 1, 1, set ? Rgb{255, 255, 255} : Rgb{0, 0, 0});
       }
     // The label grows with the tile: the window shows the eight tiles at a quarter of their size.
-    const int scale = std::max(2, w / 64);
+    const int scale = std::max(2, static_cast<int>(std::lround(static_cast<float>(w / 64) * labelScale)));
     fillRect(out, ox + scale, oy + scale, 5 * scale, 7 * scale, {200, 40, 40});
     drawNumber(out, ox + 2 * scale, oy + 2 * scale, bit, scale, {255, 255, 255});
   }
@@ -438,7 +438,7 @@ float eyeDepth(float windowDepth, const glm::mat4& projection, bool reversed) {
 }
 
 Image depthPicture(const std::vector<float>& depth, int width, int height, const glm::mat4& projection,
-                   bool reversed, DepthRange* rangeOut) {
+                   bool reversed, DepthRange* rangeOut, int textScale) {
   std::vector<float> eye(depth.size());
   DepthRange range;
   range.nearest = std::numeric_limits<float>::infinity();
@@ -462,7 +462,7 @@ Image depthPicture(const std::vector<float>& depth, int width, int height, const
     return Rgb{g, g, g};
   };
 
-  const int scale = 2, small = 2, band = 7 * scale + 8;
+  const int scale = std::max(1, textScale), small = scale, band = 7 * scale + 8;
   Image out(width, height + band, 4);
   for (int py = 0; py < height; ++py)
     for (int px = 0; px < width; ++px) {

@@ -48,8 +48,9 @@ struct StencilRampStyle {
 Image stencilRamp(const Image& stencil, const StencilRampStyle& style = {});
 
 // The eight bit planes side by side (4 x 2 tiles, bit 0 top left): white where set, each tile
-// labelled with its bit in digits 1/64 of the tile's width wide (at least 2 pixels a dot).
-Image stencilBitPlanes(const Image& stencil);
+// labelled with its bit in digits 1/64 of the tile's width wide times labelScale (the window's
+// UI scale), at least 2 pixels a dot.
+Image stencilBitPlanes(const Image& stencil, float labelScale = 1.0f);
 
 // Depth complexity's colours (lesson 13): a count of 0 is black, 1..top run along one ramp from
 // dark indigo through crimson and orange to pale yellow whose luminance rises with the count, so a
@@ -109,11 +110,12 @@ struct DepthRange {
 // 255) to dark grey (farthest, kDepthFarGrey), so a scene's depth reads whatever its near and far
 // planes; the cleared depth in kDepthClearedColour. Reversed depth gives the picture standard depth
 // gives for the same eye depths. Below, a legend band: the ramp with the nearest and farthest eye
-// depth written at its ends (2 decimals), and a swatch of the cleared colour with its pixel count.
+// depth written at its ends (2 decimals), and a swatch of the cleared colour with its pixel count,
+// its digits textScale pixels a dot (2; the window's follow its UI scale).
 constexpr std::uint8_t kDepthFarGrey = 48;
 constexpr std::array<std::uint8_t, 3> kDepthClearedColour = {20, 40, 120};
 Image depthPicture(const std::vector<float>& depth, int width, int height, const glm::mat4& projection,
-                   bool reversed, DepthRange* range = nullptr);
+                   bool reversed, DepthRange* range = nullptr, int textScale = 2);
 // One line for a terminal: the range a depth picture stretched, and what its colours mean.
 std::string depthLegendLine(const DepthRange&);
 

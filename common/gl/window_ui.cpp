@@ -6,6 +6,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // ClosePopupToLevel: Esc closes an open list
 
 #include <algorithm>
 #include <cctype>
@@ -51,6 +52,9 @@ struct WindowState {
   bool scaleChanged = true;                        // the fonts and sizes are rebuilt before the next frame
   std::vector<int> keysPressed = {};               // since the panel's last frame (replayImGuiTaps)
   bool editEnding = false;                         // Esc ended a typed edit that ImGui has not yet closed
+  bool closeLists = false;                         // Esc closes the open drop-down list in the next frame
+  bool editing = false;                            // a panel field took typed text in the last frame
+  bool listOpen = false;                           // a drop-down list was open in the last frame
   int sayCountsAfter = -1;                         // say the counts new in this frame (after a key changed an option)
   std::vector<std::string> countsBefore = {};      // the count names before the option changed
   FrameRate rate = {};
@@ -168,7 +172,12 @@ std::string optionLine(const Option& o) {
 }
 
 void setUiScale(WindowState& st, float scale) {
-  scale = std::clamp(std::round(scale / kUiScaleStep) * kUiScaleStep, kMinUiScale, kMaxUiScale);
+  scale = std::round(scale / kUiScaleStep) * kUiScaleStep;
+  if (scale < kMinUiScale || scale > kMaxUiScale) {
+    say(st, "ui scale " + scaleText(st.uiScale) + " is the " + (scale < kMinUiScale ? "smallest" : "largest") +
+                " (" + scaleText(kMinUiScale) + " to " + scaleText(kMaxUiScale) + ")");
+    return;
+  }
   if (scale == st.uiScale) return;
   st.uiScale = scale;
   st.scaleChanged = st.sayLayout = true;
@@ -207,6 +216,11 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
       say(st, "edit cancelled (Esc again quits)");
       st.editEnding = true;
     }
+    return;
+  }
+  if (key == GLFW_KEY_ESCAPE && ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopup)) {
+    say(st, "list closed (Esc again quits)");
+    st.closeLists = true;
     return;
   }
   if (key == GLFW_KEY_ESCAPE) {
@@ -348,8 +362,8 @@ struct PanelFit {
   float optionsShown = 0, optionsWanted = 0;  // the options' scrolling area and what they need
 };
 
-// A combo box the panel's full width, its choice shown after `label` ("variant [V]: ops") or alone
-// where both do not fit, its list as wide as its widest choice: no name is cut.
+// A combo box the panel's full width, its choice shown after `label` ("variant [V]: ops"), after its
+// key alone, or alone where neither fits, its list as wide as its widest choice: no name is cut.
 template <typename Names, typename Pick>
 void fullWidthCombo(const char* id, const std::string& label, const std::string& current, const Names& names,
                     const std::string& chosen, Pick pick, PanelFit& fit) {
@@ -358,8 +372,10 @@ void fullWidthCombo(const char* id, const std::string& label, const std::string&
   const auto fits = [&](const std::string& text) {
     return ImGui::CalcTextSize(text.c_str()).x + style.FramePadding.x * 2 + arrow <= width;
   };
-  // The label and its key where they fit, else the choice alone (the keys' hint names the key).
+  // The label and its key where they fit, else the key and the choice ("[PgUp PgDn] 16-fast-...",
+  // "[V] keyhole"), else the choice alone (the keys' hint names the key).
   std::string preview = label + ": " + current;
+  if (!fits(preview) && label.find('[') != std::string::npos) preview = label.substr(label.find('[')) + " " + current;
   if (!fits(preview)) preview = current;
   if (!fits(preview)) fit.cut.push_back(preview);
   float widest = 0;
@@ -424,7 +440,7 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
   // need more: the views, the pass stepper and the frame rate stay in the window. The heights are
   // the last frame's (the first frame's guess is corrected by the second).
   const std::string keys = std::string("drag: orbit  wheel: zoom  R: reset  S: screenshot (shift: with the panel)  "
-                                       "PgDn PgUp: next, previous lesson  F1: hide the panel  + -: text size  "
+                                       "PgDn PgUp: next, previous lesson  F1: hide the panel  + -: UI scale  "
                                        "F2: say the frame rate  Esc: quit") +
                            (s.info.brush ? "  right drag: the lesson's brush" : "");
   const float keysExtra = ImGui::CalcTextSize(keys.c_str(), nullptr, false, full).y - ImGui::GetTextLineHeight();
@@ -530,7 +546,7 @@ void saveScreenshot(WindowState& st, const Image& image) {
   char name[128];
   std::snprintf(name, sizeof name, "screenshot-%s-%03d.png", st.session.info.id.c_str(), st.screenshots++);
   writePng(name, image);
-  std::cerr << "saved " << name << "\n";
+  std::cerr << "saved " << (std::filesystem::current_path() / name).string() << "\n";
 }
 
 // The fonts and sizes for a UI scale: the default font rebuilt at 13 px x scale (crisp, not
@@ -551,8 +567,8 @@ void applyUiScale(float scale) {
 
 // The stencil views' pictures: the values in grey (0 black, 255 white, the raw values as
 // docs/12's figures show them); the bit planes; or each value in its colour with the legend below,
-// its digits the UI scale's size (rounded, at least 1) and at most a fifth of the picture's height
-// high, the rarest values counted as "+N" where they do not fit (the grey view shows every value),
+// its digits the UI scale's size (rounded, at least 1) and at most a fifth (a third above scale 1)
+// of the picture's height high, the rarest values counted as "+N" where they do not fit (the grey view shows every value),
 // so a 256-value stencil keeps most of the window for its picture.
 Image stencilViewPicture(View view, const Image& stencil, float uiScale) {
   if (view == View::StencilGrey) {
@@ -564,10 +580,34 @@ Image stencilViewPicture(View view, const Image& stencil, float uiScale) {
     }
     return out;
   }
-  if (view == View::StencilBits) return stencilBitPlanes(stencil);
+  if (view == View::StencilBits) return stencilBitPlanes(stencil, uiScale);
   const int k = std::max(1, static_cast<int>(std::lround(uiScale)));
-  // An entry row is 18 px at scale 1: as many rows as fit in a fifth of the picture, at least one.
-  return stencilRamp(stencil, {.legendScale = k, .maxLegendRows = std::max(1, stencil.height / 5 / (18 * k))});
+  // An entry row is 18 px at scale 1: as many rows as fit in a fifth of the picture at scale 1, a
+  // third above it (the larger digits need the rows), at least one.
+  const int share = k > 1 ? 3 : 5;
+  return stencilRamp(stencil, {.legendScale = k, .maxLegendRows = std::max(1, stencil.height / share / (18 * k))});
+}
+
+// A window larger than the screen's work area (--size 1280x720 and the panel on a 1280x720
+// projector) is shrunk to fit it, the picture keeping its aspect ratio, and moved onto it; one line
+// says so. A --frames run (a test against a golden) keeps its size.
+void fitToScreen(GLFWwindow* w, WindowState& st) {
+  GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+  if (!monitor) return;
+  int ax = 0, ay = 0, aw = 0, ah = 0, ww = 0, wh = 0, x = 0, y = 0;
+  glfwGetMonitorWorkarea(monitor, &ax, &ay, &aw, &ah);
+  glfwGetWindowSize(w, &ww, &wh);
+  if (aw <= 0 || ah <= 0 || (ww <= aw && wh <= ah)) return;
+  const int panel = st.panel ? std::min(panelWidth(st.uiScale), aw / 2) : 0;
+  const int pictureW = std::max(1, ww - panel), pictureH = std::max(1, wh);
+  const double k = std::min(static_cast<double>(aw - panel) / pictureW, static_cast<double>(ah) / pictureH);
+  const int fitW = std::max(1, static_cast<int>(pictureW * k)), fitH = std::max(1, static_cast<int>(pictureH * k));
+  glfwSetWindowSize(w, fitW + panel, fitH);
+  glfwGetWindowPos(w, &x, &y);
+  glfwSetWindowPos(w, std::clamp(x, ax, ax + aw - (fitW + panel)), std::clamp(y, ay, ay + ah - fitH));
+  say(st, "the window fits the screen's " + std::to_string(aw) + "x" + std::to_string(ah) + ": the picture is " +
+              std::to_string(fitW) + "x" + std::to_string(fitH) + ", not " + std::to_string(pictureW) + "x" +
+              std::to_string(pictureH));
 }
 
 }  // namespace
@@ -596,6 +636,7 @@ int runWindow(Session& s) {
   if (st.panel && st.uiScale != cl.uiScale.value_or(1.0f))
     glfwSetWindowSize(window, cl.width + panelWidth(st.uiScale), cl.height);
   if (cl.position) glfwSetWindowPos(window, cl.position->first, cl.position->second);
+  if (!cl.frames) fitToScreen(window, st);
   if (st.view != View::Colour) say(st, std::string("view: ") + viewName(st.view));
   glfwSetWindowUserPointer(window, &st);
   // Ours first: ImGui chains to the callbacks installed before it.
@@ -661,8 +702,9 @@ int runWindow(Session& s) {
         s.pointer = glm::vec2(static_cast<float>(cx) * sx - static_cast<float>(areaX),
                               static_cast<float>(h) - static_cast<float>(cy) * sy);
       }
-      // A variant switched to may run fewer passes: the step stays among those the last frame ran.
-      st.passStep = std::min(st.passStep, passesRun(s) - 1);
+      // A variant switched to may run fewer passes: the step stays among those the last frame ran
+      // (none yet in a framebuffer just made for a new size: the step is kept).
+      if (passesRun(s) > 0) st.passStep = std::min(st.passStep, passesRun(s) - 1);
       const int step = st.passStep;
       s.uiScale = st.uiScale;
       s.saveShadowMasks = cl.frames && frame + 1 >= *cl.frames;  // --mask-out: the last frame, as headless
@@ -699,7 +741,8 @@ int runWindow(Session& s) {
       } else if (st.view == View::Depth) {
         DepthRange range;
         shown = depthPicture(snap ? snap->depth : s.framebuffer->readDepth(), s.framebuffer->width(),
-                             s.framebuffer->height(), s.projection, s.reversedDepth, &range);
+                             s.framebuffer->height(), s.projection, s.reversedDepth, &range,
+                             std::max(2, static_cast<int>(std::lround(2.0f * st.uiScale))));
         if (st.sayDepthRange) say(st, depthLegendLine(range));
         st.sayDepthRange = false;
         display.show(shown, areaX, areaW, h);
@@ -727,11 +770,18 @@ int runWindow(Session& s) {
       ImGui_ImplGlfw_NewFrame();
       replayImGuiTaps(window, st, true);
       ImGui::NewFrame();
+      if (st.closeLists) ImGui::ClosePopupToLevel(0, true);
+      st.closeLists = false;
       PanelFit fit;
       if (st.panel) fit = drawPanel(window, st, static_cast<float>(wh));
       if (st.sayCountsAfter >= 0) --st.sayCountsAfter;
       ImGui::Render();
       replayImGuiTaps(window, st, false);
+      if (ImGui::GetIO().WantTextInput && !st.editing) say(st, "editing a value: Enter sets it, Esc cancels");
+      st.editing = ImGui::GetIO().WantTextInput;
+      const bool listOpen = ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopup);
+      if (listOpen && !st.listOpen) say(st, "a list is open: click a choice, Esc closes it");
+      st.listOpen = listOpen;
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       glViewport(0, 0, w, h);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

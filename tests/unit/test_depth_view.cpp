@@ -91,3 +91,24 @@ TEST(DepthView, NothingDrawnIsAllCleared) {
   EXPECT_EQ(range.drawn, 0u);
   EXPECT_EQ(picture.at(2, 1)[2], kDepthClearedColour[2]);
 }
+
+// The legend's digits are textScale pixels a dot (3x5 dots): the window's grow with its UI scale.
+TEST(DepthView, LegendDigitsFollowTheTextScale) {
+  const int width = 240, height = 4;
+  const std::vector<float> depth(static_cast<std::size_t>(width * height), windowDepth(kFinite, 3.0f, false));
+  for (const int textScale : {2, 4, 6}) {
+    const Image picture = depthPicture(depth, width, height, kFinite, false, nullptr, textScale);
+    ASSERT_EQ(picture.height, height + 7 * textScale + 8) << textScale;
+    // Rows of the band holding white: the digits' 5 dots (the ramp's white end is as high).
+    int whiteRows = 0;
+    for (int y = height; y < picture.height; ++y) {
+      bool white = false;
+      for (int x = 0; x < width; ++x) {
+        const std::uint8_t* p = picture.at(x, y);
+        white = white || (p[0] == 255 && p[1] == 255 && p[2] == 255);
+      }
+      whiteRows += white;
+    }
+    EXPECT_EQ(whiteRows, 5 * textScale) << textScale;
+  }
+}

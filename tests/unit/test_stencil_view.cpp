@@ -111,6 +111,26 @@ TEST(StencilView, BitPlanesShowEachBitInItsTile) {
   }
 }
 
+// Each tile's label is 1/64 of the tile wide a dot, times the label scale (the window's UI scale):
+// its red box is 7 dots high.
+TEST(StencilView, BitPlaneLabelsGrowWithTheLabelScale) {
+  const int n = 256;
+  const Image s(n, n, 1);
+  for (const float labelScale : {1.0f, 2.0f, 3.0f}) {
+    const Image pic = stencilBitPlanes(s, labelScale);
+    int redRows = 0;
+    for (int y = 0; y < n; ++y) {
+      bool red = false;
+      for (int x = 0; x < n; ++x) {
+        const std::uint8_t* p = pic.at(x, y);
+        red = red || (p[0] == 200 && p[1] == 40 && p[2] == 40);
+      }
+      redRows += red;
+    }
+    EXPECT_EQ(redRows, 7 * static_cast<int>(4 * labelScale)) << labelScale;
+  }
+}
+
 // Lesson 13's count colours: a larger count always looks brighter, for any top, and adjacent
 // counts stay apart while the ramp is short (the GLUT demo's map showed 3 brighter than 4 and
 // everything from 8 up white).

@@ -4,7 +4,8 @@
 # usage: tests/window/keys.sh EXE [FLAGS...] -- KEY=REGEX...
 #   KEY    an xdotool key name (Tab, v, p, shift+p, Escape); or size:WxH or move:X,Y, which resize
 #          or move the window as a user's window manager would (xdotool windowsize, windowmove);
-#          or sleep:SECONDS, a pause (no REGEX); or ctrlclick:X,Y, a ctrl+click in the window
+#          or sleep:SECONDS, a pause (no REGEX); or click:X,Y or ctrlclick:X,Y, a click or a
+#          ctrl+click in the window at X,Y
 #   REGEX  an extended regular expression that a line the window says after the key must match,
 #          within 10 s; the next step looks only at the lines after that one. Empty: no line wanted.
 # After the steps one Escape must close the window within 10 s.
@@ -65,6 +66,7 @@ for step in "$@"; do
     size:*) size=${key#size:}; xdotool windowsize "$wid" "${size%x*}" "${size#*x}" ;;
     move:*) at=${key#move:}; xdotool windowmove "$wid" "${at%,*}" "${at#*,}" ;;
     sleep:*) sleep "${key#sleep:}"; continue ;;
+    click:*) at=${key#click:}; xdotool mousemove --window "$wid" "${at%,*}" "${at#*,}" click 1 ;;
     ctrlclick:*)  # ctrl+click at X,Y in the window: ImGui's way into a slider's typed value
       at=${key#ctrlclick:}
       xdotool mousemove --window "$wid" "${at%,*}" "${at#*,}" keydown ctrl click 1 keyup ctrl ;;
