@@ -497,6 +497,10 @@ std::string depthLegendLine(const DepthRange& r) {
   std::ostringstream line;
   line.setf(std::ios::fixed);
   line.precision(2);
+  if (r.drawn == 0) {
+    line << "depth: nothing drawn; blue: the far plane or nothing drawn (" << r.cleared << " pixels)";
+    return line.str();
+  }
   line << "depth: eye depth " << r.nearest << " (white) to " << r.farthest
        << " (dark grey), stretched linearly over the depths present; blue: the far plane or nothing drawn ("
        << r.cleared << " pixels)";

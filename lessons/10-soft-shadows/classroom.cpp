@@ -55,8 +55,8 @@ LessonInfo lessonInfo() {
        "each light adds 1/N of white, unshaded, to the ground: the picture is the visible fraction", 0},
       {"reference", 'Q', "the exact visible fraction (analytic; the slab only) instead of the lights", 0},
       {"converged", '4',
-       "the reference ray cast instead, any casters: 2^converged stratified shadow rays per pixel\n"
-       "      (geometry/soft_shadow_reference.h; 0: the analytic one)",
+       "with reference (Q): the reference ray cast instead, any casters: 2^converged stratified shadow\n"
+       "      rays per pixel (geometry/soft_shadow_reference.h; 0: the analytic one)",
        0, 14},
       {"progressive", 'O', "each frame adds N new samples to a running average", 0},
       {"penumbra", 'X', "tint the penumbra: pixels some lights reach and some do not (float only)", 0},
