@@ -55,6 +55,9 @@
 #include <algorithm>
 #include <string>
 #include <vector>
+#ifdef __GLIBC__  // (defined by the headers above)
+#include <malloc.h>
+#endif
 
 #include "csg_lesson.h"
 
@@ -505,6 +508,13 @@ void Csg::clipByIntersection(Frame& f, const CsgProduct& p) {
 
 int main(int argc, char** argv) {
   using namespace stencil;
+#ifdef __GLIBC__
+  // llvmpipe (Mesa 22) copies its whole fragment state (33 KB) into the frame's command memory at
+  // every state change and a few hundred bytes per triangle, in 64 KB blocks it mallocs and frees
+  // at each flush; glibc hands the freed heap top back to the kernel past 128 KB, and the next
+  // flush faults every page in again: most of a frame's time here (docs/14-csg.md). Keep it.
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
+#endif
   return runSceneLesson(
       csg_lesson::lessonInfo(), [](const Scene* fromFile) { return std::make_unique<csg_lesson::Csg>(fromFile); },
       argc, argv);
