@@ -10,6 +10,7 @@
 
 #include "geometry/bounds.h"
 #include "geometry/csg.h"
+#include "geometry/fast_shadows.h"
 #include "geometry/scene.h"
 #include "gl/depth_mapping.h"
 #include "gl/gpu_mesh.h"
@@ -57,7 +58,7 @@ class Csg final : public Lesson {
   int targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<int>& targets);
   void scs(Frame& f, const SumOfProducts& sop);
   void scsEnter(Frame& f, const CsgProduct& p);
-  void scsSubtract(Frame& f, int s, GLuint query = 0, bool clean = false);
+  void scsSubtract(Frame& f, const std::vector<int>& batch, GLuint query = 0, bool clean = false);
   BoundingSphere worldSphereOf(int i) const;
   bool reachesPastFar(const Frame& f, int i) const;
   void clipByIntersection(Frame& f, const CsgProduct& p);
@@ -65,7 +66,14 @@ class Csg final : public Lesson {
   // ---- automatic.cpp: per product the method that is right for it, with OpenCSG's economies ------
   void automatic(Frame& f, const SumOfProducts& sop);
   void scsUntilUnchanged(Frame& f, const CsgProduct& p);
-  bool scissorTo(const Frame& f, int i) const;
+  struct Footprint {
+    Aabb box;
+    BoundingSphere sphere;
+    ScissorRect rect;
+  };
+  Footprint footprintOf(const Frame& f, int i) const;
+  static bool overlap(const ScissorRect& a, const ScissorRect& b);
+  static bool meet(const Footprint& a, const Footprint& b);
 
   // ---- drawing.cpp: the work buffer and the draws ------------------------------------------------
   void workBuffer(glm::ivec2 size);
@@ -97,6 +105,7 @@ class Csg final : public Lesson {
   std::string preparedFor_;
   std::vector<bool> convex_;  // per primitive, from its mesh (isConvex)
   std::vector<std::pair<glm::vec3, glm::vec3>> boxes_;  // per primitive, its object-space bounding box
+  std::vector<BoundingSphere> spheres_;                 // and bounding sphere
   // The work buffer: depth and stencil, the pass stepper's colour, and per pixel the primitive
   // whose fragment wrote the depth (its index + 1; 0 none), which the merge draws alone.
   GLuint work_ = 0, workDepth_ = 0, workColour_ = 0, workPrimitive_ = 0;

@@ -14,7 +14,7 @@ Csg::Csg(const Scene* fromFile)
     : fromFile_(fromFile),
       light_("common/light.vert", "common/light.frag"),
       depthOnly_("common/light.vert", "common/flat.frag"),
-      merge_("common/light.vert", "14-csg/merge.frag"),
+      merge_("14-csg/merge.vert", "14-csg/merge.frag"),
       flat_("common/flat.vert", "common/flat.frag"),
       quadMesh_(makeScreenQuad()),
       quad_(quadMesh_) {
@@ -77,6 +77,7 @@ CsgTree Csg::prepare(const CsgScene& scene, double time) {
     colours_.clear();
     convex_.clear();
     boxes_.clear();
+    spheres_.clear();
     for (const Primitive& p : scene.primitives) {
       meshes_.push_back(std::make_unique<GpuMesh>(p.mesh));
       colours_.push_back(p.colour);
@@ -84,6 +85,7 @@ CsgTree Csg::prepare(const CsgScene& scene, double time) {
       glm::vec3 low = p.mesh.positions.front(), high = low;
       for (const glm::vec3& v : p.mesh.positions) low = glm::min(low, v), high = glm::max(high, v);
       boxes_.emplace_back(low, high);
+      spheres_.push_back(boundingSphereOf(p.mesh.positions));
     }
     preparedFor_ = scene.expression;
   }

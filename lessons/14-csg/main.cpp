@@ -410,7 +410,7 @@ void Csg::scs(Frame& f, const SumOfProducts& sop) {
     // 2. The subtraction sequence.
     const std::vector<int> order = subtractionSequence(static_cast<int>(p.subtracted.size()));
     f.count("sequence_length", order.size());
-    for (int i : order) scsSubtract(f, p.subtracted[static_cast<std::size_t>(i)]);
+    for (int i : order) scsSubtract(f, {p.subtracted[static_cast<std::size_t>(i)]});
     f.pass("subtract");
     // 3. A surface moved past an intersected primitive's back face left the intersection.
     clipByIntersection(f, p);
@@ -450,12 +450,14 @@ void Csg::scsEnter(Frame& f, const CsgProduct& p) {
 // SCS's step 2 for one subtracted primitive s: where the surface lies inside s (s's back face
 // behind it, its front face not: in front, or cut away by the near plane when the eye is inside
 // s), the surface moves back to s's back face. The front face is tested behind (z-fail) so that a
-// front face the near plane removed reads as in front. A non-zero `query` counts the fragments
-// that moved (GL_SAMPLES_PASSED around the move alone). With `clean`, the stencil is left as
-// found (0): s's back faces cover every pixel its front faces marked (a closed convex solid whose
-// back faces the far plane does not cut: a front face beyond the near plane has its back face
-// beyond it too), and each mark they meet goes back to 0; the next subtraction needs no clear.
-void Csg::scsSubtract(Frame& f, int s, GLuint query, bool clean) {
+// front face the near plane removed reads as in front. Several primitives that share no pixel
+// (the automatic method's batches) are the same as one after the other, and are drawn together.
+// A non-zero `query` counts the fragments that moved (GL_SAMPLES_PASSED around the move alone).
+// With `clean`, the stencil is left as found (0): s's back faces cover every pixel its front
+// faces marked (a closed convex solid whose back faces the far plane does not cut: a front face
+// beyond the near plane has its back face beyond it too), and each mark they meet goes back to
+// 0; the next subtraction needs no clear.
+void Csg::scsSubtract(Frame& f, const std::vector<int>& batch, GLuint query, bool clean) {
   glStencilMask(0xFF);
   if (!clean) glClear(GL_STENCIL_BUFFER_BIT);
   glDepthFunc(furtherOrEqual());  // s's front face behind the surface, or on it: not inside s
@@ -464,7 +466,7 @@ void Csg::scsSubtract(Frame& f, int s, GLuint query, bool clean) {
   glStencilFunc(GL_ALWAYS, 1, 0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   glCullFace(GL_BACK);
-  drawDepth(s);
+  for (int s : batch) drawDepth(s);
   glDepthFunc(further());  // elsewhere, its back face behind it: the surface is inside s
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);  // it moves to that back face
@@ -475,7 +477,7 @@ void Csg::scsSubtract(Frame& f, int s, GLuint query, bool clean) {
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glCullFace(GL_FRONT);
   if (query) glBeginQuery(GL_SAMPLES_PASSED, query);
-  drawSelected(s);
+  for (int s : batch) drawSelected(s);
   if (query) glEndQuery(GL_SAMPLES_PASSED);
   f.count("subtraction_passes", 2);
 }
