@@ -31,12 +31,24 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
     f.count(name, 0);
   workBuffer(f.size);
   mergeInputs();
+  // The work buffer's colour is the pass stepper's picture alone: here only the primitives are
+  // written (and the shader's lighting, unused, is not run).
+  glBindFramebuffer(GL_FRAMEBUFFER, work_);
+  const GLenum primitivesOnly[] = {GL_NONE, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, primitivesOnly);
+  glEnable(GL_SCISSOR_TEST);
   for (const CsgProduct& p : sop.products) {
+    // A product's surface lies inside each of its intersected primitives: within all their window
+    // rectangles. Every pass of the product, its merge too, is scissored to that.
+    ScissorRect within{0, 0, f.size.x, f.size.y};
+    for (int a : p.intersected) within = common(within, footprintOf(f, a).rect);
+    if (within.width <= 0 || within.height <= 0) continue;  // off screen
+    glScissor(within.x, within.y, within.width, within.height);
     const auto isConvex = [&](int i) { return convex_[static_cast<std::size_t>(i)]; };
     if (std::all_of(p.intersected.begin(), p.intersected.end(), isConvex) &&
         std::all_of(p.subtracted.begin(), p.subtracted.end(), isConvex)) {
       f.count("scs_products");
-      scsUntilUnchanged(f, p);
+      scsUntilUnchanged(f, p, within);
     } else {
       f.count("goldfeather_products");
       SumOfProducts one;
@@ -44,6 +56,10 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
       goldfeather(f, one, true);
     }
   }
+  glDisable(GL_SCISSOR_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, work_);
+  const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, both);
   glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer());
 }
 
@@ -62,8 +78,8 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
 //   - a batch that moved nothing, and meets no batch that moved something, since it was last
 //     drawn would move nothing again: it is left out of the next cycle;
 //   - a subtracted primitive whose batch never moved the surface is nowhere on it: not merged.
-void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p) {
-  scsEnter(f, p);
+void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& within) {
+  scsEnter(f, p, false);
   std::vector<int> shown;  // the subtracted primitives on screen (one off screen moves nothing)
   std::vector<Footprint> footprints;
   for (int s : p.subtracted) {
@@ -112,7 +128,7 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p) {
   f.ownOcclusionQueries([&] {
     if (!queries.empty()) glGenQueries(static_cast<GLsizei>(nb), queries.data());
     glStencilMask(0xFF);
-    glClear(GL_STENCIL_BUFFER_BIT);  // scsEnter's clip left its counts
+    if (p.intersected.size() > 1) glClear(GL_STENCIL_BUFFER_BIT);  // scsEnter's clip left its counts
     for (std::size_t cycle = 0; cycle < cycles; ++cycle) {
       f.count("cycles");
       std::vector<bool> drawn(nb, false);
@@ -124,14 +140,13 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p) {
             std::none_of(batches[b].begin(), batches[b].end(), [&](int s) { return reachesPastFar(f, s); });
         scsSubtract(f, batches[b], queries.empty() ? 0 : queries[b], clean);
         if (!clean) {
-          glEnable(GL_SCISSOR_TEST);
           for (std::size_t i = 0; i < n; ++i) {
             if (batchOf[i] != b) continue;
-            const ScissorRect& r = footprints[i].rect;
+            const ScissorRect r = common(footprints[i].rect, within);
             glScissor(r.x, r.y, r.width, r.height);
             glClear(GL_STENCIL_BUFFER_BIT);  // the marks within its rectangle
           }
-          glDisable(GL_SCISSOR_TEST);
+          glScissor(within.x, within.y, within.width, within.height);
         }
       }
       if (queries.empty()) break;
@@ -191,6 +206,12 @@ Csg::Footprint Csg::footprintOf(const Frame& f, int i) const {
   const glm::ivec2 last = glm::min(glm::ivec2(glm::ceil((highNdc * 0.5f + 0.5f) * size)) + 1, f.size);
   if (last.x > first.x && last.y > first.y) footprint.rect = {first.x, first.y, last.x - first.x, last.y - first.y};
   return footprint;
+}
+
+ScissorRect Csg::common(const ScissorRect& a, const ScissorRect& b) {
+  const int x = std::max(a.x, b.x), y = std::max(a.y, b.y);
+  return {x, y, std::max(0, std::min(a.x + a.width, b.x + b.width) - x),
+          std::max(0, std::min(a.y + a.height, b.y + b.height) - y)};
 }
 
 bool Csg::overlap(const ScissorRect& a, const ScissorRect& b) {

@@ -57,7 +57,7 @@ class Csg final : public Lesson {
   void mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets);
   int targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<int>& targets);
   void scs(Frame& f, const SumOfProducts& sop);
-  void scsEnter(Frame& f, const CsgProduct& p);
+  void scsEnter(Frame& f, const CsgProduct& p, bool clip = true);
   void scsSubtract(Frame& f, const std::vector<int>& batch, GLuint query = 0, bool clean = false);
   BoundingSphere worldSphereOf(int i) const;
   bool reachesPastFar(const Frame& f, int i) const;
@@ -65,13 +65,14 @@ class Csg final : public Lesson {
 
   // ---- automatic.cpp: per product the method that is right for it, with OpenCSG's economies ------
   void automatic(Frame& f, const SumOfProducts& sop);
-  void scsUntilUnchanged(Frame& f, const CsgProduct& p);
+  void scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& within);
   struct Footprint {
     Aabb box;
     BoundingSphere sphere;
     ScissorRect rect;
   };
   Footprint footprintOf(const Frame& f, int i) const;
+  static ScissorRect common(const ScissorRect& a, const ScissorRect& b);  // their intersection
   static bool overlap(const ScissorRect& a, const ScissorRect& b);
   static bool meet(const Footprint& a, const Footprint& b);
 

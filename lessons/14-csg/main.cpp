@@ -423,8 +423,10 @@ void Csg::scs(Frame& f, const SumOfProducts& sop) {
 }
 
 // SCS's step 1, in the work buffer: the intersected primitives' front faces, the furthest kept,
-// clipped to where the ray is inside them all.
-void Csg::scsEnter(Frame& f, const CsgProduct& p) {
+// clipped to where the ray is inside them all. One convex primitive's front face lies inside it,
+// and the clip after the subtractions sends what it does not cover to the far plane: without
+// `clip` (the automatic method's economy) a single one is not clipped here.
+void Csg::scsEnter(Frame& f, const CsgProduct& p, bool clip) {
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   // The work buffer's colour follows the surface as it moves (no part of the method: the
   // pass stepper's picture of it).
@@ -443,7 +445,7 @@ void Csg::scsEnter(Frame& f, const CsgProduct& p) {
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glCullFace(GL_BACK);
   for (int a : p.intersected) drawSelected(a);
-  clipByIntersection(f, p);
+  if (clip || p.intersected.size() > 1) clipByIntersection(f, p);
   f.pass("intersect");
 }
 
