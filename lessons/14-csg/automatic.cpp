@@ -32,10 +32,11 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
   workBuffer(f.size);
   mergeInputs();
   // The work buffer's colour is the pass stepper's picture alone: here only the primitives are
-  // written (and the shader's lighting, unused, is not run).
+  // written, by a shader with nothing to light.
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   const GLenum primitivesOnly[] = {GL_NONE, GL_COLOR_ATTACHMENT1};
   glDrawBuffers(2, primitivesOnly);
+  primitivesOnly_ = true;
   glEnable(GL_SCISSOR_TEST);
   for (const CsgProduct& p : sop.products) {
     // A product's surface lies inside each of its intersected primitives: within all their window
@@ -57,6 +58,7 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
     }
   }
   glDisable(GL_SCISSOR_TEST);
+  primitivesOnly_ = false;
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   glDrawBuffers(2, both);

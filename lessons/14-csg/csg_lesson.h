@@ -97,7 +97,8 @@ class Csg final : public Lesson {
   void checkAgainstRayCast(Frame& f, const CsgScene& scene, const CsgTree& tree, int method) const;
 
   const Scene* fromFile_;  // --scene's file, or nullptr for the lesson's own scenes
-  Program light_, depthOnly_, merge_, flat_;
+  Program light_, depthOnly_, merge_, select_, flat_;
+  bool primitivesOnly_ = false;  // drawSelected writes the primitive alone (the automatic method)
   Mesh quadMesh_;
   GpuMesh quad_;
   std::vector<std::unique_ptr<GpuMesh>> meshes_;

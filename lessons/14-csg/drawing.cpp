@@ -15,6 +15,7 @@ Csg::Csg(const Scene* fromFile)
       light_("common/light.vert", "common/light.frag"),
       depthOnly_("common/light.vert", "common/flat.frag"),
       merge_("14-csg/merge.vert", "14-csg/merge.frag"),
+      select_("14-csg/merge.vert", "14-csg/select.frag"),
       flat_("common/flat.vert", "common/flat.frag"),
       quadMesh_(makeScreenQuad()),
       quad_(quadMesh_) {
@@ -140,7 +141,15 @@ void Csg::drawShaded(int i) {
 }
 // Into the work buffer: lit, every fragment kept (the depth and stencil tests choose), its
 // primitive written beside its depth.
+// (The automatic method writes the primitive alone.)
 void Csg::drawSelected(int i) {
+  if (primitivesOnly_) {
+    select_.set("primitive", i + 1);
+    select_.set("model", models_[static_cast<std::size_t>(i)]);
+    frontFace(i);
+    meshes_[static_cast<std::size_t>(i)]->draw();
+    return;
+  }
   merge_.set("merging", 0);
   merge_.set("primitive", i + 1);
   merge_.set("model", models_[static_cast<std::size_t>(i)]);

@@ -81,7 +81,7 @@ void Csg::render(Frame& f) {
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   glEnable(GL_CULL_FACE);  // a solid's front or back faces, one at a time
   const glm::mat4 viewProjection = depth_.projection * f.view;
-  for (Program* p : {&light_, &depthOnly_, &merge_}) p->set("viewProjection", viewProjection);
+  for (Program* p : {&light_, &depthOnly_, &merge_, &select_}) p->set("viewProjection", viewProjection);
   setLighting(light_, f);
   setLighting(merge_, f);
   light_.set("twoSided", 1);  // back faces kept are seen from inside: lit on that side
