@@ -36,7 +36,7 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   const GLenum primitivesOnly[] = {GL_NONE, GL_COLOR_ATTACHMENT1};
   glDrawBuffers(2, primitivesOnly);
-  primitivesOnly_ = true;
+  primitivesOnly_ = keepNearest_ = true;
   glEnable(GL_SCISSOR_TEST);
   for (const CsgProduct& p : sop.products) {
     // A product's surface lies inside each of its intersected primitives: within all their window
@@ -58,7 +58,7 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
     }
   }
   glDisable(GL_SCISSOR_TEST);
-  primitivesOnly_ = false;
+  primitivesOnly_ = keepNearest_ = false;
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   glDrawBuffers(2, both);
@@ -174,6 +174,30 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
   for (int s : p.subtracted)
     if (merged[static_cast<std::size_t>(s)]) targets.push_back(s);
   mergeIntoFrame(f, p, targets);
+}
+
+// The automatic method's step 3 of a layer: the work buffer's surface into nearest_, where it is
+// nearer than the layers before it.
+void Csg::keepNearest(Frame& f) {
+  glBindFramebuffer(GL_FRAMEBUFFER, nearest_);
+  glDepthFunc(depth_.less);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_STENCIL_TEST);  // (nearest_ has none)
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, workPrimitive_);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, workDepth_);
+  keep_.set("transform", glm::mat4(1.0f));
+  const bool culling = glIsEnabled(GL_CULL_FACE);
+  glDisable(GL_CULL_FACE);
+  quad_.draw();
+  if (culling) glEnable(GL_CULL_FACE);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glActiveTexture(GL_TEXTURE0);
+  glEnable(GL_STENCIL_TEST);
+  f.pass("keep");
 }
 
 // Primitive i's footprint this frame: its object box at its model, as a world box, the world

@@ -54,7 +54,8 @@ class Csg final : public Lesson {
   void goldfeather(Frame& f, const SumOfProducts& sop, bool layered);
   bool trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targets,
                  const std::vector<int>& trimmers, int layer);
-  void mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets);
+  void mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets, bool fromNearest = false);
+  void keepNearest(Frame& f);
   int targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<int>& targets);
   void scs(Frame& f, const SumOfProducts& sop);
   void scsEnter(Frame& f, const CsgProduct& p, bool clip = true);
@@ -97,8 +98,9 @@ class Csg final : public Lesson {
   void checkAgainstRayCast(Frame& f, const CsgScene& scene, const CsgTree& tree, int method) const;
 
   const Scene* fromFile_;  // --scene's file, or nullptr for the lesson's own scenes
-  Program light_, depthOnly_, merge_, select_, flat_;
+  Program light_, depthOnly_, merge_, select_, keep_, flat_;
   bool primitivesOnly_ = false;  // drawSelected writes the primitive alone (the automatic method)
+  bool keepNearest_ = false;     // layered: each layer kept in nearest_, the product merged once (ditto)
   Mesh quadMesh_;
   GpuMesh quad_;
   std::vector<std::unique_ptr<GpuMesh>> meshes_;
@@ -111,6 +113,8 @@ class Csg final : public Lesson {
   // The work buffer: depth and stencil, the pass stepper's colour, and per pixel the primitive
   // whose fragment wrote the depth (its index + 1; 0 none), which the merge draws alone.
   GLuint work_ = 0, workDepth_ = 0, workColour_ = 0, workPrimitive_ = 0;
+  // The automatic method's layered products: the nearest of their layers' surfaces, as above.
+  GLuint nearest_ = 0, nearestDepth_ = 0, nearestPrimitive_ = 0;
   glm::ivec2 workSize_{0};
   bool mirroredView_ = false;  // this frame's view matrix has a negative determinant
   DepthMapping depth_;         // this frame's: its depth tests, clear depth and projection

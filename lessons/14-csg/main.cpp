@@ -211,8 +211,14 @@ void Csg::goldfeather(Frame& f, const SumOfProducts& sop, bool layered) {
     targets.insert(targets.end(), product.subtracted.begin(), product.subtracted.end());
     if (layered) {
       const int k = f.on("queries") ? 255 : targetDepthComplexity(f, product, targets);
+      if (keepNearest_) {  // the automatic method: the layers kept where nearest, merged once
+        glBindFramebuffer(GL_FRAMEBUFFER, nearest_);
+        glDepthMask(GL_TRUE);
+        glClear(GL_DEPTH_BUFFER_BIT);
+      }
       for (int layer = 0; layer < k; ++layer)
         if (!trimLayer(f, product, targets, targets, layer)) break;
+      if (keepNearest_) mergeIntoFrame(f, product, targets, true);
     } else {
       for (int x : targets) {
         std::vector<int> others;
@@ -317,8 +323,12 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
   glEnable(GL_CULL_FACE);
   f.pass("parity");
 
-  // 3. Merge: the targets drawn into the frame where they are the trimmed surface.
-  mergeIntoFrame(f, p, targets);
+  // 3. Merge: the targets drawn into the frame where they are the trimmed surface (or, the
+  // automatic method, the surface kept where it is the nearest layer's yet).
+  if (keepNearest_)
+    keepNearest(f);
+  else
+    mergeIntoFrame(f, p, targets);
   return true;
 }
 
@@ -328,7 +338,7 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
 // same triangle drawn again lands on the same depth (gl_Position is invariant), and another
 // target's face crossing the surface there, however close in depth, is not the surface (OpenCSG
 // records the primitive's ID the same way).
-void Csg::mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets) {
+void Csg::mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets, bool fromNearest) {
   glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer());
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthFunc(depth_.less);
@@ -336,9 +346,9 @@ void Csg::mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& 
   glStencilMask(0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   glActiveTexture(GL_TEXTURE1);
-  glBindTexture(GL_TEXTURE_2D, workPrimitive_);
+  glBindTexture(GL_TEXTURE_2D, fromNearest ? nearestPrimitive_ : workPrimitive_);
   glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, workDepth_);
+  glBindTexture(GL_TEXTURE_2D, fromNearest ? nearestDepth_ : workDepth_);
   for (int x : targets) {
     glStencilFunc(GL_ALWAYS, x % 255 + 1, 0xFF);  // the primitive, modulo 255, for the oracle
     drawTargets(p, {x}, Paint::Merged);
