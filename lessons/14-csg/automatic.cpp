@@ -36,7 +36,7 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   const GLenum primitivesOnly[] = {GL_NONE, GL_COLOR_ATTACHMENT1};
   glDrawBuffers(2, primitivesOnly);
-  primitivesOnly_ = keepNearest_ = true;
+  automatic_ = true;
   glEnable(GL_SCISSOR_TEST);
   for (const CsgProduct& p : sop.products) {
     // A product's surface lies inside each of its intersected primitives: within all their window
@@ -58,7 +58,7 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
     }
   }
   glDisable(GL_SCISSOR_TEST);
-  primitivesOnly_ = keepNearest_ = false;
+  automatic_ = false;
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   glDrawBuffers(2, both);
@@ -198,6 +198,23 @@ void Csg::keepNearest(Frame& f) {
   glActiveTexture(GL_TEXTURE0);
   glEnable(GL_STENCIL_TEST);
   f.pass("keep");
+}
+
+// Before a layered product's layers: nearest_'s depth back to the far plane (within the scissor).
+void Csg::clearNearest() {
+  glBindFramebuffer(GL_FRAMEBUFFER, nearest_);
+  glDepthMask(GL_TRUE);
+  glClear(GL_DEPTH_BUFFER_BIT);
+}
+
+// The largest stencil count within the scissor box (the product's rectangle), read back once.
+int Csg::largestCount() const {
+  GLint box[4] = {0, 0, 0, 0};
+  glGetIntegerv(GL_SCISSOR_BOX, box);
+  std::vector<GLubyte> counts(static_cast<std::size_t>(box[2]) * static_cast<std::size_t>(box[3]), 0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(box[0], box[1], box[2], box[3], GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, counts.data());
+  return counts.empty() ? 0 : *std::max_element(counts.begin(), counts.end());
 }
 
 // Primitive i's footprint this frame: its object box at its model, as a world box, the world

@@ -56,6 +56,8 @@ class Csg final : public Lesson {
                  const std::vector<int>& trimmers, int layer);
   void mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets, bool fromNearest = false);
   void keepNearest(Frame& f);
+  void clearNearest();
+  int largestCount() const;
   int targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<int>& targets);
   void scs(Frame& f, const SumOfProducts& sop);
   void scsEnter(Frame& f, const CsgProduct& p, bool clip = true);
@@ -99,8 +101,9 @@ class Csg final : public Lesson {
 
   const Scene* fromFile_;  // --scene's file, or nullptr for the lesson's own scenes
   Program light_, depthOnly_, merge_, select_, keep_, flat_;
-  bool primitivesOnly_ = false;  // drawSelected writes the primitive alone (the automatic method)
-  bool keepNearest_ = false;     // layered: each layer kept in nearest_, the product merged once (ditto)
+  // The automatic method's economies on: drawSelected writes the primitive alone; a layered
+  // product's layers are kept in nearest_ and merged once; the depth complexity is read back.
+  bool automatic_ = false;
   Mesh quadMesh_;
   GpuMesh quad_;
   std::vector<std::unique_ptr<GpuMesh>> meshes_;
@@ -134,6 +137,9 @@ CsgScene sceneFor(const Frame&, const Scene* fromFile);
 // Whether a closed mesh bounds a convex solid (geometry/shadow_volume.h's isConvex on the mesh
 // welded by position): SCS takes only these, and Goldfeather tries one layer of them.
 bool convexMesh(const Mesh& mesh);
+
+// Keeps the heap the process frees (glibc's trim threshold raised), for llvmpipe's per-flush blocks.
+void keepFreedHeap();
 
 // The lesson's name, options, variants (with their cameras) and passes.
 LessonInfo lessonInfo();

@@ -169,7 +169,7 @@ void Csg::drawShaded(int i) {
 // primitive written beside its depth.
 // (The automatic method writes the primitive alone.)
 void Csg::drawSelected(int i) {
-  if (primitivesOnly_) {
+  if (automatic_) {
     select_.set("primitive", i + 1);
     select_.set("model", models_[static_cast<std::size_t>(i)]);
     frontFace(i);

@@ -55,9 +55,6 @@
 #include <algorithm>
 #include <string>
 #include <vector>
-#ifdef __GLIBC__  // (defined by the headers above)
-#include <malloc.h>
-#endif
 
 #include "csg_lesson.h"
 
@@ -211,14 +208,10 @@ void Csg::goldfeather(Frame& f, const SumOfProducts& sop, bool layered) {
     targets.insert(targets.end(), product.subtracted.begin(), product.subtracted.end());
     if (layered) {
       const int k = f.on("queries") ? 255 : targetDepthComplexity(f, product, targets);
-      if (keepNearest_) {  // the automatic method: the layers kept where nearest, merged once
-        glBindFramebuffer(GL_FRAMEBUFFER, nearest_);
-        glDepthMask(GL_TRUE);
-        glClear(GL_DEPTH_BUFFER_BIT);
-      }
+      if (automatic_) clearNearest();  // the automatic method: layers kept where nearest, merged once
       for (int layer = 0; layer < k; ++layer)
         if (!trimLayer(f, product, targets, targets, layer)) break;
-      if (keepNearest_) mergeIntoFrame(f, product, targets, true);
+      if (automatic_) mergeIntoFrame(f, product, targets, true);
     } else {
       for (int x : targets) {
         std::vector<int> others;
@@ -325,7 +318,7 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
 
   // 3. Merge: the targets drawn into the frame where they are the trimmed surface (or, the
   // automatic method, the surface kept where it is the nearest layer's yet).
-  if (keepNearest_)
+  if (automatic_)
     keepNearest(f);
   else
     mergeIntoFrame(f, p, targets);
@@ -377,6 +370,7 @@ int Csg::targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<
   drawTargets(p, targets, Paint::Depth);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   int low = 0, high = 255;  // the largest count lies in [low, high]
+  if (automatic_) low = high = largestCount();  // read once, for the bisection's 8 queries
   f.ownOcclusionQueries([&] {
     GLuint query = 0;
     glGenQueries(1, &query);
@@ -522,13 +516,7 @@ void Csg::clipByIntersection(Frame& f, const CsgProduct& p) {
 
 int main(int argc, char** argv) {
   using namespace stencil;
-#ifdef __GLIBC__
-  // llvmpipe (Mesa 22) copies its whole fragment state (33 KB) into the frame's command memory at
-  // every state change and a few hundred bytes per triangle, in 64 KB blocks it mallocs and frees
-  // at each flush; glibc hands the freed heap top back to the kernel past 128 KB, and the next
-  // flush faults every page in again: most of a frame's time here (docs/14-csg.md). Keep it.
-  mallopt(M_TRIM_THRESHOLD, 256 << 20);
-#endif
+  csg_lesson::keepFreedHeap();
   return runSceneLesson(
       csg_lesson::lessonInfo(), [](const Scene* fromFile) { return std::make_unique<csg_lesson::Csg>(fromFile); },
       argc, argv);
