@@ -1,18 +1,16 @@
-// Lesson 14's automatic method (method 4): per product, the method that is right for it, with two
-// of OpenCSG's economies (Kirsch and Döllner, "Rendering Techniques for Hardware-Accelerated
-// Image-Based CSG", 2004; OpenCSG's Automatic setting):
+// Lesson 14's automatic method (method 4): per product, the method that is right for it, with
+// OpenCSG's economies and a few more (Kirsch and Döllner, "Rendering Techniques for
+// Hardware-Accelerated Image-Based CSG", 2004; OpenCSG's Automatic setting):
 //   - a product whose primitives are all convex (decided from each mesh, not from a bound the
 //     user gives: geometry/shadow_volume.h's isConvex on the welded mesh) is drawn by SCS, its
-//     subtractions applied in cycles, each cycle every subtracted primitive once, an occlusion
-//     query counting the fragments each cycle moves; the first cycle that moves none ends it.
-//     A surface that no subtracted primitive moves lies in none of them: it is final. n cycles
-//     hold every ordering of n primitives (the k-th of an ordering from the k-th cycle), so the
-//     cycles never do more than the full sequence needs;
-//   - a product with a concave primitive is drawn by layered Goldfeather (its layers counted);
-//   - each subtracted primitive's passes are scissored to the window rectangle of its bounding
-//     sphere (lightScissor, lesson 16's): a primitive changes no pixel outside it, and one wholly
-//     off screen is skipped; and the stencil is not cleared before each subtraction: s's back
-//     faces set its marks back to 0 as they move the surface.
+//     subtractions applied in cycles of batches until one moves nothing (scsUntilUnchanged says
+//     how the batches, the bound on the cycles and the redrawn batches follow from where the
+//     primitives lie);
+//   - a product with a concave primitive is drawn by layered Goldfeather, its layers counted by
+//     one read of the stencil, kept where nearest and merged once;
+//   - every pass of a product is scissored to the window rectangle its intersected primitives
+//     share, and the work buffer gets the primitive alone (its colour is the pass stepper's).
+// None of this changes a pixel; each saves draws or llvmpipe's per-state-change copies.
 #include <algorithm>
 #include <limits>
 
