@@ -1,19 +1,18 @@
-// Lesson 14's automatic method (method 4): per product, the method that is right for it, with two
-// of OpenCSG's economies (Kirsch and Döllner, "Rendering Techniques for Hardware-Accelerated
-// Image-Based CSG", 2004; OpenCSG's Automatic setting):
+// Lesson 14's automatic method (method 4): per product, the method that is right for it, with
+// OpenCSG's economies and a few more (Kirsch and Döllner, "Rendering Techniques for
+// Hardware-Accelerated Image-Based CSG", 2004; OpenCSG's Automatic setting):
 //   - a product whose primitives are all convex (decided from each mesh, not from a bound the
 //     user gives: geometry/shadow_volume.h's isConvex on the welded mesh) is drawn by SCS, its
-//     subtractions applied in cycles, each cycle every subtracted primitive once, an occlusion
-//     query counting the fragments each cycle moves; the first cycle that moves none ends it.
-//     A surface that no subtracted primitive moves lies in none of them: it is final. n cycles
-//     hold every ordering of n primitives (the k-th of an ordering from the k-th cycle), so the
-//     cycles never do more than the full sequence needs;
-//   - a product with a concave primitive is drawn by layered Goldfeather (its layers counted);
-//   - each subtracted primitive's passes are scissored to the window rectangle of its bounding
-//     sphere (lightScissor, lesson 16's): a primitive changes no pixel outside it, and one wholly
-//     off screen is skipped; and the stencil is not cleared before each subtraction: s's back
-//     faces set its marks back to 0 as they move the surface.
+//     subtractions applied in cycles of batches until one moves nothing (scsUntilUnchanged says
+//     how the batches, the bound on the cycles and the redrawn batches follow from where the
+//     primitives lie);
+//   - a product with a concave primitive is drawn by layered Goldfeather, its layers counted by
+//     one read of the stencil, kept where nearest and merged once;
+//   - every pass of a product is scissored to the window rectangle its intersected primitives
+//     share, and the work buffer gets the primitive alone (its colour is the pass stepper's).
+// None of this changes a pixel; each saves draws or llvmpipe's per-state-change copies.
 #include <algorithm>
+#include <limits>
 
 #include "csg_lesson.h"
 #include "geometry/bounds.h"
@@ -30,12 +29,25 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
     f.count(name, 0);
   workBuffer(f.size);
   mergeInputs();
+  // The work buffer's colour is the pass stepper's picture alone: here only the primitives are
+  // written, by a shader with nothing to light.
+  glBindFramebuffer(GL_FRAMEBUFFER, work_);
+  const GLenum primitivesOnly[] = {GL_NONE, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, primitivesOnly);
+  automatic_ = true;
+  glEnable(GL_SCISSOR_TEST);
   for (const CsgProduct& p : sop.products) {
+    // A product's surface lies inside each of its intersected primitives: within all their window
+    // rectangles. Every pass of the product, its merge too, is scissored to that.
+    ScissorRect within{0, 0, f.size.x, f.size.y};
+    for (int a : p.intersected) within = common(within, footprintOf(f, a).rect);
+    if (within.width <= 0 || within.height <= 0) continue;  // off screen
+    glScissor(within.x, within.y, within.width, within.height);
     const auto isConvex = [&](int i) { return convex_[static_cast<std::size_t>(i)]; };
     if (std::all_of(p.intersected.begin(), p.intersected.end(), isConvex) &&
         std::all_of(p.subtracted.begin(), p.subtracted.end(), isConvex)) {
       f.count("scs_products");
-      scsUntilUnchanged(f, p);
+      scsUntilUnchanged(f, p, within);
     } else {
       f.count("goldfeather_products");
       SumOfProducts one;
@@ -43,53 +55,216 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
       goldfeather(f, one, true);
     }
   }
+  glDisable(GL_SCISSOR_TEST);
+  automatic_ = false;
+  glBindFramebuffer(GL_FRAMEBUFFER, work_);
+  const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, both);
   glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer());
 }
 
 // SCS on one product of convex primitives (main.cpp's steps), the subtractions in cycles until
-// one moves nothing.
-void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p) {
-  scsEnter(f, p);
-  const std::size_t n = p.subtracted.size();
-  std::vector<GLuint> queries(n, 0);
-  f.ownOcclusionQueries([&] {
-    glGenQueries(static_cast<GLsizei>(n), queries.data());
-    glStencilMask(0xFF);
-    glClear(GL_STENCIL_BUFFER_BIT);  // scsEnter's clip left its counts (all of them: no scissor yet)
-    glEnable(GL_SCISSOR_TEST);
-    for (std::size_t cycle = 0; cycle < n; ++cycle) {
-      f.count("cycles");
-      std::vector<bool> drawn(n, false);
-      for (std::size_t i = 0; i < n; ++i) {
-        const int s = p.subtracted[i];
-        if (!scissorTo(f, s)) continue;  // off screen: it moves nothing
-        // Its back faces clear its marks, unless the far plane cuts some of them away.
-        const bool clean = !reachesPastFar(f, s);
-        scsSubtract(f, s, queries[i], clean);
-        if (!clean) {
-          glStencilMask(0xFF);
-          glClear(GL_STENCIL_BUFFER_BIT);  // within the scissor: s's marks
-        }
-        drawn[i] = true;
+// one moves nothing, batched and bounded by where the subtracted primitives lie on screen and in
+// the world (their footprints):
+//   - a batch is subtracted primitives whose window rectangles do not overlap (taken greedily, in
+//     the product's order): they share no pixel, so drawing them together is drawing them in
+//     turn, with one change of state for all of them where each draw would change it twice
+//     (llvmpipe copies 33 KB of state at each change);
+//   - two subtracted primitives can meet along a pixel's ray only where their rectangles and
+//     their world bounds overlap; a group is the primitives linked that way, and the order of
+//     subtractions matters only within a group. n cycles hold every ordering of n primitives, so
+//     the cycles stop at the largest group's size; where no two primitives meet, one cycle is
+//     the whole answer and it needs no query;
+//   - a batch that moved nothing, and meets no batch that moved something, since it was last
+//     drawn would move nothing again: it is left out of the next cycle;
+//   - a subtracted primitive whose batch never moved the surface is nowhere on it: not merged.
+void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& within) {
+  scsEnter(f, p, false);
+  std::vector<int> shown;  // the subtracted primitives on screen (one off screen moves nothing)
+  std::vector<Footprint> footprints;
+  for (int s : p.subtracted) {
+    const Footprint footprint = footprintOf(f, s);
+    if (footprint.rect.width <= 0 || footprint.rect.height <= 0) continue;
+    shown.push_back(s);
+    footprints.push_back(footprint);
+  }
+  const std::size_t n = shown.size();
+  std::vector<std::vector<int>> batches;
+  std::vector<std::size_t> batchOf(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::size_t b = 0;
+    while (b < batches.size() && std::any_of(batches[b].begin(), batches[b].end(), [&](int j) {
+             return overlap(footprints[i].rect, footprints[static_cast<std::size_t>(j)].rect);
+           }))
+      ++b;
+    if (b == batches.size()) batches.emplace_back();
+    batches[b].push_back(static_cast<int>(i));  // an index into shown until the groups are found
+    batchOf[i] = b;
+  }
+  const std::size_t nb = batches.size();
+  std::vector<std::size_t> group(n);  // union-find: each primitive's link towards its group
+  for (std::size_t i = 0; i < n; ++i) group[i] = i;
+  const auto groupOf = [&](std::size_t i) {
+    while (group[i] != i) i = group[i] = group[group[i]];
+    return i;
+  };
+  std::vector<std::vector<bool>> batchesMeet(nb, std::vector<bool>(nb, false));
+  for (std::size_t b = 0; b < nb; ++b) batchesMeet[b][b] = true;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (meet(footprints[i], footprints[j])) {
+        group[groupOf(i)] = groupOf(j);
+        batchesMeet[batchOf[i]][batchOf[j]] = batchesMeet[batchOf[j]][batchOf[i]] = true;
       }
-      GLuint64 moved = 0;
-      for (std::size_t i = 0; i < n; ++i)
-        if (drawn[i]) {
-          GLuint64 samples = 0;
-          glGetQueryObjectui64v(queries[i], GL_QUERY_RESULT, &samples);
-          moved += samples;
+  std::vector<std::size_t> groupSize(n, 0);
+  std::size_t cycles = 0;
+  for (std::size_t i = 0; i < n; ++i) cycles = std::max(cycles, ++groupSize[groupOf(i)]);
+  for (auto& batch : batches)
+    for (int& i : batch) i = shown[static_cast<std::size_t>(i)];
+  f.count("batches", nb);
+
+  std::vector<GLuint> queries(cycles > 1 ? nb : 0, 0);
+  std::vector<bool> moved(nb, true), onSurface(nb, queries.empty());
+  f.ownOcclusionQueries([&] {
+    if (!queries.empty()) glGenQueries(static_cast<GLsizei>(nb), queries.data());
+    glStencilMask(0xFF);
+    if (p.intersected.size() > 1) glClear(GL_STENCIL_BUFFER_BIT);  // scsEnter's clip left its counts
+    for (std::size_t cycle = 0; cycle < cycles; ++cycle) {
+      f.count("cycles");
+      std::vector<bool> drawn(nb, false);
+      for (std::size_t b = 0; b < nb; ++b) {
+        for (std::size_t c = 0; c < nb && !drawn[b]; ++c) drawn[b] = batchesMeet[b][c] && moved[c];
+        if (!drawn[b]) continue;
+        // Their back faces clear their marks, unless the far plane cuts some of them away.
+        const bool clean =
+            std::none_of(batches[b].begin(), batches[b].end(), [&](int s) { return reachesPastFar(f, s); });
+        scsSubtract(f, batches[b], queries.empty() ? 0 : queries[b], clean);
+        if (!clean) {
+          for (std::size_t i = 0; i < n; ++i) {
+            if (batchOf[i] != b) continue;
+            const ScissorRect r = common(footprints[i].rect, within);
+            glScissor(r.x, r.y, r.width, r.height);
+            glClear(GL_STENCIL_BUFFER_BIT);  // the marks within its rectangle
+          }
+          glScissor(within.x, within.y, within.width, within.height);
         }
-      if (moved == 0) break;
+      }
+      if (queries.empty()) break;
+      bool any = false;
+      for (std::size_t b = 0; b < nb; ++b) {
+        GLuint64 samples = 0;
+        if (drawn[b]) glGetQueryObjectui64v(queries[b], GL_QUERY_RESULT, &samples);
+        moved[b] = samples > 0;
+        onSurface[b] = onSurface[b] || moved[b];
+        any = any || moved[b];
+      }
+      if (!any) break;
     }
-    glDisable(GL_SCISSOR_TEST);
-    glDeleteQueries(static_cast<GLsizei>(n), queries.data());
+    if (!queries.empty()) glDeleteQueries(static_cast<GLsizei>(nb), queries.data());
   });
   f.pass("subtract");
   clipByIntersection(f, p);
   f.pass("intersect");
+  std::vector<bool> merged(models_.size(), false);  // in the product's order, as main.cpp merges
+  for (std::size_t b = 0; b < nb; ++b)
+    for (int s : batches[b]) merged[static_cast<std::size_t>(s)] = onSurface[b];
   std::vector<int> targets = p.intersected;
-  targets.insert(targets.end(), p.subtracted.begin(), p.subtracted.end());
+  for (int s : p.subtracted)
+    if (merged[static_cast<std::size_t>(s)]) targets.push_back(s);
   mergeIntoFrame(f, p, targets);
+}
+
+// The automatic method's step 3 of a layer: the work buffer's surface into nearest_, where it is
+// nearer than the layers before it.
+void Csg::keepNearest(Frame& f) {
+  glBindFramebuffer(GL_FRAMEBUFFER, nearest_);
+  glDepthFunc(depth_.less);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_STENCIL_TEST);  // (nearest_ has none)
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, workPrimitive_);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, workDepth_);
+  keep_.set("transform", glm::mat4(1.0f));
+  const bool culling = glIsEnabled(GL_CULL_FACE);
+  glDisable(GL_CULL_FACE);
+  quad_.draw();
+  if (culling) glEnable(GL_CULL_FACE);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glActiveTexture(GL_TEXTURE0);
+  glEnable(GL_STENCIL_TEST);
+  f.pass("keep");
+}
+
+// Before a layered product's layers: nearest_'s depth back to the far plane (within the scissor).
+void Csg::clearNearest() {
+  glBindFramebuffer(GL_FRAMEBUFFER, nearest_);
+  glDepthMask(GL_TRUE);
+  glClear(GL_DEPTH_BUFFER_BIT);
+}
+
+// The largest stencil count within the scissor box (the product's rectangle), read back once.
+int Csg::largestCount() const {
+  GLint box[4] = {0, 0, 0, 0};
+  glGetIntegerv(GL_SCISSOR_BOX, box);
+  std::vector<GLubyte> counts(static_cast<std::size_t>(box[2]) * static_cast<std::size_t>(box[3]), 0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(box[0], box[1], box[2], box[3], GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, counts.data());
+  return counts.empty() ? 0 : *std::max_element(counts.begin(), counts.end());
+}
+
+// Primitive i's footprint this frame: its object box at its model, as a world box, the world
+// sphere around its mesh's own sphere, and the window rectangle (GL's origin bottom left) that
+// holds the box's corners projected, a pixel wider each way; the whole window where a corner lies
+// behind the eye, empty where the box is off screen.
+Csg::Footprint Csg::footprintOf(const Frame& f, int i) const {
+  const auto& [low, high] = boxes_[static_cast<std::size_t>(i)];
+  const glm::mat4& model = models_[static_cast<std::size_t>(i)];
+  const glm::mat4 toClip = f.projection * f.view * model;
+  Footprint footprint;
+  glm::vec2 lowNdc(std::numeric_limits<float>::max()), highNdc(-std::numeric_limits<float>::max());
+  bool behind = false;
+  for (int c = 0; c < 8; ++c) {
+    const glm::vec4 corner((c & 1) ? high.x : low.x, (c & 2) ? high.y : low.y, (c & 4) ? high.z : low.z, 1.0f);
+    footprint.box.extend(glm::vec3(model * corner));
+    const glm::vec4 clip = toClip * corner;
+    behind = behind || clip.w <= 0.0f;
+    if (clip.w > 0.0f) lowNdc = glm::min(lowNdc, glm::vec2(clip) / clip.w), highNdc = glm::max(highNdc, glm::vec2(clip) / clip.w);
+  }
+  const BoundingSphere& sphere = spheres_[static_cast<std::size_t>(i)];
+  const glm::mat3 linear(model);
+  footprint.sphere.centre = glm::vec3(model * glm::vec4(sphere.centre, 1.0f));
+  footprint.sphere.radius =
+      sphere.radius * std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
+  if (behind) {
+    footprint.rect = {0, 0, f.size.x, f.size.y};
+    return footprint;
+  }
+  const glm::vec2 size(f.size);
+  const glm::ivec2 first = glm::max(glm::ivec2(glm::floor((lowNdc * 0.5f + 0.5f) * size)) - 1, glm::ivec2(0));
+  const glm::ivec2 last = glm::min(glm::ivec2(glm::ceil((highNdc * 0.5f + 0.5f) * size)) + 1, f.size);
+  if (last.x > first.x && last.y > first.y) footprint.rect = {first.x, first.y, last.x - first.x, last.y - first.y};
+  return footprint;
+}
+
+ScissorRect Csg::common(const ScissorRect& a, const ScissorRect& b) {
+  const int x = std::max(a.x, b.x), y = std::max(a.y, b.y);
+  return {x, y, std::max(0, std::min(a.x + a.width, b.x + b.width) - x),
+          std::max(0, std::min(a.y + a.height, b.y + b.height) - y)};
+}
+
+bool Csg::overlap(const ScissorRect& a, const ScissorRect& b) {
+  return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
+}
+
+// Whether two primitives can share a point that a pixel's ray passes: their rectangles, world
+// boxes and world spheres all overlap.
+bool Csg::meet(const Footprint& a, const Footprint& b) {
+  return overlap(a.rect, b.rect) && glm::all(glm::lessThanEqual(a.box.min, b.box.max)) &&
+         glm::all(glm::lessThanEqual(b.box.min, a.box.max)) &&
+         glm::distance(a.sphere.centre, b.sphere.centre) <= a.sphere.radius + b.sphere.radius;
 }
 
 // Primitive i's bounding sphere in world space: its object-space box's corners at its model.
@@ -101,15 +276,6 @@ BoundingSphere Csg::worldSphereOf(int i) const {
     corners.emplace_back(model * glm::vec4((c & 1) ? high.x : low.x, (c & 2) ? high.y : low.y,
                                            (c & 4) ? high.z : low.z, 1.0f));
   return boundingSphereOf(corners);
-}
-
-// The scissor rectangle of primitive i's bounding sphere; false when it is wholly off screen.
-bool Csg::scissorTo(const Frame& f, int i) const {
-  const BoundingSphere sphere = worldSphereOf(i);
-  const ScissorRect r = lightScissor(sphere.centre, sphere.radius, f.projection * f.view, f.size);
-  if (r.width <= 0 || r.height <= 0) return false;
-  glScissor(r.x, r.y, r.width, r.height);
-  return true;
 }
 
 // Whether primitive i's bounding sphere reaches past Frame::projection's far plane (which then cuts

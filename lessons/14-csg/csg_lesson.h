@@ -10,6 +10,7 @@
 
 #include "geometry/bounds.h"
 #include "geometry/csg.h"
+#include "geometry/fast_shadows.h"
 #include "geometry/scene.h"
 #include "gl/depth_mapping.h"
 #include "gl/gpu_mesh.h"
@@ -53,19 +54,30 @@ class Csg final : public Lesson {
   void goldfeather(Frame& f, const SumOfProducts& sop, bool layered);
   bool trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targets,
                  const std::vector<int>& trimmers, int layer);
-  void mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets);
+  void mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets, bool fromNearest = false);
+  void keepNearest(Frame& f);
+  void clearNearest();
+  int largestCount() const;
   int targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<int>& targets);
   void scs(Frame& f, const SumOfProducts& sop);
-  void scsEnter(Frame& f, const CsgProduct& p);
-  void scsSubtract(Frame& f, int s, GLuint query = 0, bool clean = false);
+  void scsEnter(Frame& f, const CsgProduct& p, bool clip = true);
+  void scsSubtract(Frame& f, const std::vector<int>& batch, GLuint query = 0, bool clean = false);
   BoundingSphere worldSphereOf(int i) const;
   bool reachesPastFar(const Frame& f, int i) const;
   void clipByIntersection(Frame& f, const CsgProduct& p);
 
   // ---- automatic.cpp: per product the method that is right for it, with OpenCSG's economies ------
   void automatic(Frame& f, const SumOfProducts& sop);
-  void scsUntilUnchanged(Frame& f, const CsgProduct& p);
-  bool scissorTo(const Frame& f, int i) const;
+  void scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& within);
+  struct Footprint {
+    Aabb box;
+    BoundingSphere sphere;
+    ScissorRect rect;
+  };
+  Footprint footprintOf(const Frame& f, int i) const;
+  static ScissorRect common(const ScissorRect& a, const ScissorRect& b);  // their intersection
+  static bool overlap(const ScissorRect& a, const ScissorRect& b);
+  static bool meet(const Footprint& a, const Footprint& b);
 
   // ---- drawing.cpp: the work buffer and the draws ------------------------------------------------
   void workBuffer(glm::ivec2 size);
@@ -88,7 +100,10 @@ class Csg final : public Lesson {
   void checkAgainstRayCast(Frame& f, const CsgScene& scene, const CsgTree& tree, int method) const;
 
   const Scene* fromFile_;  // --scene's file, or nullptr for the lesson's own scenes
-  Program light_, depthOnly_, merge_, flat_;
+  Program light_, depthOnly_, merge_, select_, keep_, flat_;
+  // The automatic method's economies on: drawSelected writes the primitive alone; a layered
+  // product's layers are kept in nearest_ and merged once; the depth complexity is read back.
+  bool automatic_ = false;
   Mesh quadMesh_;
   GpuMesh quad_;
   std::vector<std::unique_ptr<GpuMesh>> meshes_;
@@ -97,9 +112,12 @@ class Csg final : public Lesson {
   std::string preparedFor_;
   std::vector<bool> convex_;  // per primitive, from its mesh (isConvex)
   std::vector<std::pair<glm::vec3, glm::vec3>> boxes_;  // per primitive, its object-space bounding box
+  std::vector<BoundingSphere> spheres_;                 // and bounding sphere
   // The work buffer: depth and stencil, the pass stepper's colour, and per pixel the primitive
   // whose fragment wrote the depth (its index + 1; 0 none), which the merge draws alone.
   GLuint work_ = 0, workDepth_ = 0, workColour_ = 0, workPrimitive_ = 0;
+  // The automatic method's layered products: the nearest of their layers' surfaces, as above.
+  GLuint nearest_ = 0, nearestDepth_ = 0, nearestPrimitive_ = 0;
   glm::ivec2 workSize_{0};
   bool mirroredView_ = false;  // this frame's view matrix has a negative determinant
   DepthMapping depth_;         // this frame's: its depth tests, clear depth and projection
@@ -119,6 +137,9 @@ CsgScene sceneFor(const Frame&, const Scene* fromFile);
 // Whether a closed mesh bounds a convex solid (geometry/shadow_volume.h's isConvex on the mesh
 // welded by position): SCS takes only these, and Goldfeather tries one layer of them.
 bool convexMesh(const Mesh& mesh);
+
+// Keeps the heap the process frees (glibc's trim threshold raised), for llvmpipe's per-flush blocks.
+void keepFreedHeap();
 
 // The lesson's name, options, variants (with their cameras) and passes.
 LessonInfo lessonInfo();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 #include <stdexcept>
+#include <tuple>
 
 #include "csg_lesson.h"
 #include "geometry/shapes.h"
@@ -14,7 +15,9 @@ Csg::Csg(const Scene* fromFile)
     : fromFile_(fromFile),
       light_("common/light.vert", "common/light.frag"),
       depthOnly_("common/light.vert", "common/flat.frag"),
-      merge_("common/light.vert", "14-csg/merge.frag"),
+      merge_("14-csg/merge.vert", "14-csg/merge.frag"),
+      select_("14-csg/merge.vert", "14-csg/select.frag"),
+      keep_("common/flat.vert", "14-csg/keep.frag"),
       flat_("common/flat.vert", "common/flat.frag"),
       quadMesh_(makeScreenQuad()),
       quad_(quadMesh_) {
@@ -28,6 +31,9 @@ Csg::~Csg() {
   if (workDepth_) glDeleteTextures(1, &workDepth_);
   if (workColour_) glDeleteRenderbuffers(1, &workColour_);
   if (workPrimitive_) glDeleteTextures(1, &workPrimitive_);
+  if (nearest_) glDeleteFramebuffers(1, &nearest_);
+  if (nearestDepth_) glDeleteTextures(1, &nearestDepth_);
+  if (nearestPrimitive_) glDeleteTextures(1, &nearestPrimitive_);
 }
 
 // The work buffer: a depth and stencil texture the size of the frame, 32-bit float (the merge reads
@@ -67,6 +73,27 @@ void Csg::workBuffer(glm::ivec2 size) {
   glDrawBuffers(2, drawBuffers);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw std::runtime_error("14-csg: the work buffer is incomplete");
+
+  // The nearest layers' buffer: a depth texture and a primitive texture, as the work buffer's.
+  if (!nearest_) {
+    glGenFramebuffers(1, &nearest_);
+    glGenTextures(1, &nearestDepth_);
+    glGenTextures(1, &nearestPrimitive_);
+  }
+  for (const auto& [texture, format, pixels, type] :
+       {std::tuple{nearestDepth_, GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT},
+        std::tuple{nearestPrimitive_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT}}) {
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(format), size.x, size.y, 0, pixels, type, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, nearest_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, nearestDepth_, 0);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, nearestPrimitive_, 0);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error("14-csg: the nearest layers' buffer is incomplete");
 }
 
 // The scene's meshes on the GPU (made again only when the expression changes), its models at
@@ -77,6 +104,7 @@ CsgTree Csg::prepare(const CsgScene& scene, double time) {
     colours_.clear();
     convex_.clear();
     boxes_.clear();
+    spheres_.clear();
     for (const Primitive& p : scene.primitives) {
       meshes_.push_back(std::make_unique<GpuMesh>(p.mesh));
       colours_.push_back(p.colour);
@@ -84,6 +112,7 @@ CsgTree Csg::prepare(const CsgScene& scene, double time) {
       glm::vec3 low = p.mesh.positions.front(), high = low;
       for (const glm::vec3& v : p.mesh.positions) low = glm::min(low, v), high = glm::max(high, v);
       boxes_.emplace_back(low, high);
+      spheres_.push_back(boundingSphereOf(p.mesh.positions));
     }
     preparedFor_ = scene.expression;
   }
@@ -138,7 +167,15 @@ void Csg::drawShaded(int i) {
 }
 // Into the work buffer: lit, every fragment kept (the depth and stencil tests choose), its
 // primitive written beside its depth.
+// (The automatic method writes the primitive alone.)
 void Csg::drawSelected(int i) {
+  if (automatic_) {
+    select_.set("primitive", i + 1);
+    select_.set("model", models_[static_cast<std::size_t>(i)]);
+    frontFace(i);
+    meshes_[static_cast<std::size_t>(i)]->draw();
+    return;
+  }
   merge_.set("merging", 0);
   merge_.set("primitive", i + 1);
   merge_.set("model", models_[static_cast<std::size_t>(i)]);
@@ -155,10 +192,12 @@ void Csg::drawMerged(int i) {
   merge_.set("colour", colours_[static_cast<std::size_t>(i)]);
   meshes_[static_cast<std::size_t>(i)]->draw();
 }
-// The merge shader's inputs: the work buffer's depth on texture unit 0, its primitives on 1.
+// The merge (and keep) shader's inputs: the work buffer's depth on texture unit 0, its primitives on 1.
 void Csg::mergeInputs() {
-  merge_.set("productDepth", 0);
-  merge_.set("productPrimitive", 1);
+  for (Program* p : {&merge_, &keep_}) {
+    p->set("productDepth", 0);
+    p->set("productPrimitive", 1);
+  }
 }
 
 // A mirroring model (a negative determinant: scale -1 1 1, OpenSCAD's mirror()) or a mirrored view

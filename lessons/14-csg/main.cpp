@@ -78,7 +78,7 @@ void Csg::render(Frame& f) {
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   glEnable(GL_CULL_FACE);  // a solid's front or back faces, one at a time
   const glm::mat4 viewProjection = depth_.projection * f.view;
-  for (Program* p : {&light_, &depthOnly_, &merge_}) p->set("viewProjection", viewProjection);
+  for (Program* p : {&light_, &depthOnly_, &merge_, &select_}) p->set("viewProjection", viewProjection);
   setLighting(light_, f);
   setLighting(merge_, f);
   light_.set("twoSided", 1);  // back faces kept are seen from inside: lit on that side
@@ -208,8 +208,10 @@ void Csg::goldfeather(Frame& f, const SumOfProducts& sop, bool layered) {
     targets.insert(targets.end(), product.subtracted.begin(), product.subtracted.end());
     if (layered) {
       const int k = f.on("queries") ? 255 : targetDepthComplexity(f, product, targets);
+      if (automatic_) clearNearest();  // the automatic method: layers kept where nearest, merged once
       for (int layer = 0; layer < k; ++layer)
         if (!trimLayer(f, product, targets, targets, layer)) break;
+      if (automatic_) mergeIntoFrame(f, product, targets, true);
     } else {
       for (int x : targets) {
         std::vector<int> others;
@@ -314,8 +316,12 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
   glEnable(GL_CULL_FACE);
   f.pass("parity");
 
-  // 3. Merge: the targets drawn into the frame where they are the trimmed surface.
-  mergeIntoFrame(f, p, targets);
+  // 3. Merge: the targets drawn into the frame where they are the trimmed surface (or, the
+  // automatic method, the surface kept where it is the nearest layer's yet).
+  if (automatic_)
+    keepNearest(f);
+  else
+    mergeIntoFrame(f, p, targets);
   return true;
 }
 
@@ -325,7 +331,7 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
 // same triangle drawn again lands on the same depth (gl_Position is invariant), and another
 // target's face crossing the surface there, however close in depth, is not the surface (OpenCSG
 // records the primitive's ID the same way).
-void Csg::mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets) {
+void Csg::mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets, bool fromNearest) {
   glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer());
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthFunc(depth_.less);
@@ -333,9 +339,9 @@ void Csg::mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& 
   glStencilMask(0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   glActiveTexture(GL_TEXTURE1);
-  glBindTexture(GL_TEXTURE_2D, workPrimitive_);
+  glBindTexture(GL_TEXTURE_2D, fromNearest ? nearestPrimitive_ : workPrimitive_);
   glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, workDepth_);
+  glBindTexture(GL_TEXTURE_2D, fromNearest ? nearestDepth_ : workDepth_);
   for (int x : targets) {
     glStencilFunc(GL_ALWAYS, x % 255 + 1, 0xFF);  // the primitive, modulo 255, for the oracle
     drawTargets(p, {x}, Paint::Merged);
@@ -364,6 +370,7 @@ int Csg::targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<
   drawTargets(p, targets, Paint::Depth);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   int low = 0, high = 255;  // the largest count lies in [low, high]
+  if (automatic_) low = high = largestCount();  // read once, for the bisection's 8 queries
   f.ownOcclusionQueries([&] {
     GLuint query = 0;
     glGenQueries(1, &query);
@@ -407,7 +414,7 @@ void Csg::scs(Frame& f, const SumOfProducts& sop) {
     // 2. The subtraction sequence.
     const std::vector<int> order = subtractionSequence(static_cast<int>(p.subtracted.size()));
     f.count("sequence_length", order.size());
-    for (int i : order) scsSubtract(f, p.subtracted[static_cast<std::size_t>(i)]);
+    for (int i : order) scsSubtract(f, {p.subtracted[static_cast<std::size_t>(i)]});
     f.pass("subtract");
     // 3. A surface moved past an intersected primitive's back face left the intersection.
     clipByIntersection(f, p);
@@ -420,8 +427,10 @@ void Csg::scs(Frame& f, const SumOfProducts& sop) {
 }
 
 // SCS's step 1, in the work buffer: the intersected primitives' front faces, the furthest kept,
-// clipped to where the ray is inside them all.
-void Csg::scsEnter(Frame& f, const CsgProduct& p) {
+// clipped to where the ray is inside them all. One convex primitive's front face lies inside it,
+// and the clip after the subtractions sends what it does not cover to the far plane: without
+// `clip` (the automatic method's economy) a single one is not clipped here.
+void Csg::scsEnter(Frame& f, const CsgProduct& p, bool clip) {
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   // The work buffer's colour follows the surface as it moves (no part of the method: the
   // pass stepper's picture of it).
@@ -440,19 +449,21 @@ void Csg::scsEnter(Frame& f, const CsgProduct& p) {
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glCullFace(GL_BACK);
   for (int a : p.intersected) drawSelected(a);
-  clipByIntersection(f, p);
+  if (clip || p.intersected.size() > 1) clipByIntersection(f, p);
   f.pass("intersect");
 }
 
 // SCS's step 2 for one subtracted primitive s: where the surface lies inside s (s's back face
 // behind it, its front face not: in front, or cut away by the near plane when the eye is inside
 // s), the surface moves back to s's back face. The front face is tested behind (z-fail) so that a
-// front face the near plane removed reads as in front. A non-zero `query` counts the fragments
-// that moved (GL_SAMPLES_PASSED around the move alone). With `clean`, the stencil is left as
-// found (0): s's back faces cover every pixel its front faces marked (a closed convex solid whose
-// back faces the far plane does not cut: a front face beyond the near plane has its back face
-// beyond it too), and each mark they meet goes back to 0; the next subtraction needs no clear.
-void Csg::scsSubtract(Frame& f, int s, GLuint query, bool clean) {
+// front face the near plane removed reads as in front. Several primitives that share no pixel
+// (the automatic method's batches) are the same as one after the other, and are drawn together.
+// A non-zero `query` counts the fragments that moved (GL_SAMPLES_PASSED around the move alone).
+// With `clean`, the stencil is left as found (0): s's back faces cover every pixel its front
+// faces marked (a closed convex solid whose back faces the far plane does not cut: a front face
+// beyond the near plane has its back face beyond it too), and each mark they meet goes back to
+// 0; the next subtraction needs no clear.
+void Csg::scsSubtract(Frame& f, const std::vector<int>& batch, GLuint query, bool clean) {
   glStencilMask(0xFF);
   if (!clean) glClear(GL_STENCIL_BUFFER_BIT);
   glDepthFunc(furtherOrEqual());  // s's front face behind the surface, or on it: not inside s
@@ -461,7 +472,7 @@ void Csg::scsSubtract(Frame& f, int s, GLuint query, bool clean) {
   glStencilFunc(GL_ALWAYS, 1, 0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   glCullFace(GL_BACK);
-  drawDepth(s);
+  for (int s : batch) drawDepth(s);
   glDepthFunc(further());  // elsewhere, its back face behind it: the surface is inside s
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);  // it moves to that back face
@@ -472,7 +483,7 @@ void Csg::scsSubtract(Frame& f, int s, GLuint query, bool clean) {
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glCullFace(GL_FRONT);
   if (query) glBeginQuery(GL_SAMPLES_PASSED, query);
-  drawSelected(s);
+  for (int s : batch) drawSelected(s);
   if (query) glEndQuery(GL_SAMPLES_PASSED);
   f.count("subtraction_passes", 2);
 }
@@ -505,6 +516,7 @@ void Csg::clipByIntersection(Frame& f, const CsgProduct& p) {
 
 int main(int argc, char** argv) {
   using namespace stencil;
+  csg_lesson::keepFreedHeap();
   return runSceneLesson(
       csg_lesson::lessonInfo(), [](const Scene* fromFile) { return std::make_unique<csg_lesson::Csg>(fromFile); },
       argc, argv);

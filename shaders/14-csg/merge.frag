@@ -8,9 +8,9 @@
 // keeps the nearest of every product's surfaces: their union.
 in vec3 worldPosition;
 in vec3 worldNormal;
+flat in int fragmentPrimitive;  // this primitive's index + 1 (merge.vert)
 
 uniform bool merging;
-uniform int primitive;                // this primitive's index + 1
 uniform sampler2D productDepth;       // the product's trimmed surface, window depth per pixel
 uniform usampler2D productPrimitive;  // and the primitive whose fragment wrote that depth
 uniform vec3 colour;
@@ -26,11 +26,11 @@ layout(location = 1) out uint fragPrimitive;
 void main() {
   if (merging) {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    if (texelFetch(productPrimitive, pixel, 0).r != uint(primitive) ||
+    if (texelFetch(productPrimitive, pixel, 0).r != uint(fragmentPrimitive) ||
         texelFetch(productDepth, pixel, 0).r != gl_FragCoord.z)
       discard;
   }
-  fragPrimitive = uint(primitive);
+  fragPrimitive = uint(fragmentPrimitive);
   vec3 n = normalize(worldNormal);
   if (!gl_FrontFacing) n = -n;  // a subtracted primitive's back face is seen from inside
   vec3 toLight = light.xyz - light.w * worldPosition;
