@@ -1,11 +1,20 @@
 #include "gl/context.h"
 
 #include <cstdlib>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include "gl/errors.h"
 #include "gl/gl.h"
 
 namespace stencil {
+
+void keepFreedHeap() {
+#ifdef __GLIBC__
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);  // 256 MB: far above a frame's command memory
+#endif
+}
 
 const char* backendName(Backend b) {
   switch (b) {

@@ -48,6 +48,14 @@ class Context {
 // Creates a current context of the given backend. Throws NoContextError with the reason.
 std::unique_ptr<Context> createContext(Backend, int width, int height, const std::string& title);
 
+// Keeps memory the program frees in its heap rather than handing it back to the kernel. llvmpipe
+// (Mesa 22) copies its whole fragment state (33 KB) into a frame's command memory at every state
+// change, in 64 KB blocks it mallocs and frees at each flush; with glibc's default trim threshold
+// (128 KB) each flush returns them and the next faults every page in again, which is most of a
+// frame's time in a pass-heavy lesson (lesson 14: ~2,600 page faults a frame; docs/14-csg.md).
+// Called once at start by every lesson and by benchmarks' peers, so both sides run alike.
+void keepFreedHeap();
+
 struct BackendChoice {
   Backend backend;
   std::string reason;  // said in one line when the context starts

@@ -643,6 +643,7 @@ void sayWhatTheCastersNeeded(const CommandLine& cl, const Scene& scene) {
 int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, bool readsScenes, int argc,
                char** argv) {
   const std::string program = std::filesystem::path(argv[0]).filename().string();
+  keepFreedHeap();
   try {
     const CommandLine cl = parseCommandLine(lessonInfo, argc, argv);
     if (!readsScenes && (cl.scene || cl.maskOut))

@@ -482,7 +482,14 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
         sameRow = false;
       }
       checkCut(text);
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", o.help.c_str());
+      if (ImGui::IsItemHovered()) {  // wrapped to the window's width: a long help stays on screen
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(std::max(ImGui::GetFontSize() * 10.0f,
+                                        ImGui::GetIO().DisplaySize.x - ImGui::GetIO().MousePos.x - ImGui::GetFontSize() * 2.0f));
+        ImGui::TextUnformatted(o.help.c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+      }
     }
     st.optionsHeight = ImGui::GetCursorPosY() - style.ItemSpacing.y;
     ImGui::EndChild();
@@ -517,7 +524,11 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
               static_cast<unsigned long long>(triangles));
   // The lesson's own counts (Frame::count): what an option such as lesson 14's oracle found.
   if (!s.recorder->counts().empty()) {
-    if (st.sayCountsAfter == 0) ImGui::SetNextItemOpen(true);
+    // Opened when an option brought counts of its own (lesson 14's K), not on every option change.
+    bool newCounts = false;
+    for (const auto& [name, n] : s.recorder->counts())
+      newCounts = newCounts || std::find(st.countsBefore.begin(), st.countsBefore.end(), name) == st.countsBefore.end();
+    if (st.sayCountsAfter == 0 && newCounts) ImGui::SetNextItemOpen(true);
     if (ImGui::CollapsingHeader("the lesson's counts"))
       for (const auto& [name, n] : s.recorder->counts())
         ImGui::TextWrapped("%s %llu", name.c_str(), static_cast<unsigned long long>(n));
@@ -544,7 +555,9 @@ Image crop(const Image& image, int x0, int width) {
 
 void saveScreenshot(WindowState& st, const Image& image) {
   char name[128];
-  std::snprintf(name, sizeof name, "screenshot-%s-%03d.png", st.session.info.id.c_str(), st.screenshots++);
+  do  // the next number free in the folder: an earlier run's screenshots are kept
+    std::snprintf(name, sizeof name, "screenshot-%s-%03d.png", st.session.info.id.c_str(), st.screenshots++);
+  while (std::filesystem::exists(name));
   writePng(name, image);
   std::cerr << "saved " << (std::filesystem::current_path() / name).string() << "\n";
 }
@@ -589,15 +602,24 @@ Image stencilViewPicture(View view, const Image& stencil, float uiScale) {
 }
 
 // A window larger than the screen's work area (--size 1280x720 and the panel on a 1280x720
-// projector) is shrunk to fit it, the picture keeping its aspect ratio, and moved onto it; one line
-// says so. A --frames run (a test against a golden) keeps its size.
+// projector) is shrunk to fit it, the picture keeping its aspect ratio, and moved onto it; one
+// that fits but lies past its edge (--position) is moved onto it; one line says so. A --frames run (a test against a golden) keeps its size.
 void fitToScreen(GLFWwindow* w, WindowState& st) {
   GLFWmonitor* monitor = glfwGetPrimaryMonitor();
   if (!monitor) return;
   int ax = 0, ay = 0, aw = 0, ah = 0, ww = 0, wh = 0, x = 0, y = 0;
   glfwGetMonitorWorkarea(monitor, &ax, &ay, &aw, &ah);
   glfwGetWindowSize(w, &ww, &wh);
-  if (aw <= 0 || ah <= 0 || (ww <= aw && wh <= ah)) return;
+  if (aw <= 0 || ah <= 0) return;
+  if (ww <= aw && wh <= ah) {  // it fits: only a --position past the screen's edge moves it
+    glfwGetWindowPos(w, &x, &y);
+    const int onX = std::clamp(x, ax, ax + aw - ww), onY = std::clamp(y, ay, ay + ah - wh);
+    if (onX == x && onY == y) return;
+    glfwSetWindowPos(w, onX, onY);
+    say(st, "the window is moved onto the screen's " + std::to_string(aw) + "x" + std::to_string(ah) + ": at " +
+                std::to_string(onX) + "," + std::to_string(onY) + ", not " + std::to_string(x) + "," + std::to_string(y));
+    return;
+  }
   const int panel = st.panel ? std::min(panelWidth(st.uiScale), aw / 2) : 0;
   const int pictureW = std::max(1, ww - panel), pictureH = std::max(1, wh);
   const double k = std::min(static_cast<double>(aw - panel) / pictureW, static_cast<double>(ah) / pictureH);
@@ -776,9 +798,11 @@ int runWindow(Session& s) {
       if (st.panel) fit = drawPanel(window, st, static_cast<float>(wh));
       if (st.sayCountsAfter >= 0) --st.sayCountsAfter;
       ImGui::Render();
-      replayImGuiTaps(window, st, false);
+      // A typed edit's start and end (Enter; Esc says its own line).
       if (ImGui::GetIO().WantTextInput && !st.editing) say(st, "editing a value: Enter sets it, Esc cancels");
+      if (!ImGui::GetIO().WantTextInput && st.editing && !st.editEnding) say(st, "value set");
       st.editing = ImGui::GetIO().WantTextInput;
+      replayImGuiTaps(window, st, false);
       const bool listOpen = ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopup);
       if (listOpen && !st.listOpen) say(st, "a list is open: click a choice, Esc closes it");
       st.listOpen = listOpen;

@@ -3,7 +3,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>
 #ifdef __GLIBC__  // (defined by the headers above)
-#include <malloc.h>
 #endif
 
 #include "csg_lesson.h"
@@ -328,16 +327,6 @@ LessonInfo lessonInfo() {
     return scsRefusal(o);
   };
   return info;
-}
-
-// llvmpipe (Mesa 22) copies its whole fragment state (33 KB) into the frame's command memory at
-// every state change, and a few hundred bytes a triangle, in 64 KB blocks it mallocs and frees at
-// each flush; glibc hands a freed heap top past 128 KB back to the kernel, and the next flush
-// faults every page in again: most of a frame's time here (docs/14-csg.md). Keep it.
-void keepFreedHeap() {
-#ifdef __GLIBC__
-  mallopt(M_TRIM_THRESHOLD, 256 << 20);
-#endif
 }
 
 }  // namespace stencil::csg_lesson

@@ -138,9 +138,6 @@ CsgScene sceneFor(const Frame&, const Scene* fromFile);
 // welded by position): SCS takes only these, and Goldfeather tries one layer of them.
 bool convexMesh(const Mesh& mesh);
 
-// Keeps the heap the process frees (glibc's trim threshold raised), for llvmpipe's per-flush blocks.
-void keepFreedHeap();
-
 // The lesson's name, options, variants (with their cameras) and passes.
 LessonInfo lessonInfo();
 

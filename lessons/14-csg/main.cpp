@@ -516,7 +516,6 @@ void Csg::clipByIntersection(Frame& f, const CsgProduct& p) {
 
 int main(int argc, char** argv) {
   using namespace stencil;
-  csg_lesson::keepFreedHeap();
   return runSceneLesson(
       csg_lesson::lessonInfo(), [](const Scene* fromFile) { return std::make_unique<csg_lesson::Csg>(fromFile); },
       argc, argv);

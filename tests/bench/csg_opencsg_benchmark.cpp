@@ -45,6 +45,7 @@
 #include "csg_bench_lesson_side.h"
 #include "geometry/csg.h"
 #include "geometry/scene.h"
+#include "gl/context.h"
 #include "lesson_stats.h"
 
 namespace fs = std::filesystem;
@@ -372,6 +373,7 @@ struct BenchScene {
 }  // namespace
 
 int main(int argc, char** argv) {
+  stencil::keepFreedHeap();  // OpenCSG's side keeps its heap as the lesson's does
   if (argc < 2 || std::string(argv[1]) == "--help") {
     std::cout << "usage: csg_opencsg_benchmark OUT [--quick] [--check] [--page FILE.md]   (writes OUT.csv, OUT.md)\n";
     return argc < 2 ? 2 : 0;
