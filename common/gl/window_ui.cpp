@@ -581,8 +581,8 @@ void applyUiScale(float scale) {
 // The stencil views' pictures: the values in grey (0 black, 255 white, the raw values as
 // docs/12's figures show them); the bit planes; or each value in its colour with the legend below,
 // its digits the UI scale's size (rounded, at least 1) and at most a fifth (a third above scale 1)
-// of the picture's height high, the rarest values counted as "+N" where they do not fit (the grey view shows every value),
-// so a 256-value stencil keeps most of the window for its picture.
+// of the picture's height high, the rarest values counted as "+N" where they do not fit (the grey
+// view shows every value), so a 256-value stencil keeps most of the window for its picture.
 Image stencilViewPicture(View view, const Image& stencil, float uiScale) {
   if (view == View::StencilGrey) {
     Image out(stencil.width, stencil.height, 4);
@@ -603,7 +603,8 @@ Image stencilViewPicture(View view, const Image& stencil, float uiScale) {
 
 // A window larger than the screen's work area (--size 1280x720 and the panel on a 1280x720
 // projector) is shrunk to fit it, the picture keeping its aspect ratio, and moved onto it; one
-// that fits but lies past its edge (--position) is moved onto it; one line says so. A --frames run (a test against a golden) keeps its size.
+// that fits but lies past its edge (--position) is moved onto it; one line says so. A --frames
+// run (a test against a golden) keeps its size.
 void fitToScreen(GLFWwindow* w, WindowState& st) {
   GLFWmonitor* monitor = glfwGetPrimaryMonitor();
   if (!monitor) return;
