@@ -90,6 +90,7 @@ class Csg final : public Lesson {
   void drawShaded(int i);
   void drawSelected(int i);
   void drawMerged(int i);
+  void drawWithMergeShader(int i, bool merging);  // drawSelected and drawMerged: the merge shader either way
   void mergeInputs();
   void frontFace(int i);
   void drawQuad(const glm::vec4& colour, float depth);

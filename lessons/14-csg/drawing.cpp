@@ -176,16 +176,14 @@ void Csg::drawSelected(int i) {
     meshes_[static_cast<std::size_t>(i)]->draw();
     return;
   }
-  merge_.set("merging", 0);
-  merge_.set("primitive", i + 1);
-  merge_.set("model", models_[static_cast<std::size_t>(i)]);
-  frontFace(i);
-  merge_.set("colour", colours_[static_cast<std::size_t>(i)]);
-  meshes_[static_cast<std::size_t>(i)]->draw();
+  drawWithMergeShader(i, false);
 }
 // Into the frame: lit where the work buffer holds this primitive at exactly this depth.
 void Csg::drawMerged(int i) {
-  merge_.set("merging", 1);
+  drawWithMergeShader(i, true);
+}
+void Csg::drawWithMergeShader(int i, bool merging) {
+  merge_.set("merging", merging ? 1 : 0);
   merge_.set("primitive", i + 1);
   merge_.set("model", models_[static_cast<std::size_t>(i)]);
   frontFace(i);
