@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <glm/gtc/matrix_transform.hpp>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -264,6 +265,9 @@ std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
     nlohmann::ordered_json all = nlohmann::ordered_json::array();
     for (double ms : frameMs) all.push_back(milliseconds(ms));
     out["frame_ms"]["all"] = all;
+    nlohmann::ordered_json cpu = nlohmann::ordered_json::array();
+    for (double ms : s.frameCpuMs) cpu.push_back(milliseconds(ms));
+    out["frame_cpu_ms"] = {{"all", cpu}};
   }
   return out.dump(2) + "\n";
 }
@@ -425,6 +429,7 @@ int runHeadless(Session& s) {
         .measure = cl.stats && !cl.statsFrames, .captureAll = last && cl.passesDir.has_value(), .captureOnly = {}};
     s.saveShadowMasks = last;
     const auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpuStart = std::clock();
     {
       const SlowWorkReporter reporter("frame " + std::to_string(i + 1) + " of " + std::to_string(frames) + " at " +
                                           std::to_string(cl.width) + "x" + std::to_string(cl.height),
@@ -434,6 +439,7 @@ int runHeadless(Session& s) {
     }
     frameMs.push_back(
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    s.frameCpuMs.push_back(1000.0 * static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC);
     if (frames > 1 && !cl.quiet && (i + 1) % 60 == 0) std::cerr << "frame " << i + 1 << "/" << frames << "\n";
   }
   return finishRun(s, s.framebuffer->readColour(), s.framebuffer->readStencil(), frameMs);

@@ -324,7 +324,8 @@ std::string helpText(const LessonInfo& info, const std::string& program, bool re
       << "                           with gpu_ms_null_reason), the lesson's own counts\n"
       << "  --stats-frames           --stats without the per-pass queries and glFinish: each frame\n"
       << "                           timed alone, one glFinish at its end (frame_ms, with every\n"
-      << "                           frame's time in frame_ms.all; draw calls and triangles still\n"
+      << "                           frame's time in frame_ms.all and the process's CPU time, every\n"
+      << "                           thread's, in frame_cpu_ms.all; draw calls and triangles still\n"
       << "                           counted, samples and GPU times null)\n"
       << "  --quiet                  no context line, no key or progress lines on stderr (errors still)\n";
   if (readsScenes && info.shadows)

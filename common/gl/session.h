@@ -75,6 +75,9 @@ class Session {
   glm::mat4 viewProjection{1.0f};          // the last frame's
   glm::mat4 projection{1.0f};              // the last frame's Frame::projection (the depth view)
   bool saveShadowMasks = false;            // Frame::shadowMask stages under --mask-out (the last frame)
+  // The process's CPU time per headless frame, every thread's (llvmpipe's too), milliseconds: a
+  // benchmark's measure that other work on the machine hardly changes (--stats-frames).
+  std::vector<double> frameCpuMs;
   OutputSet outputs;                       // the run's files, written as one when it ends (finishRun)
   WorkProgress progress;                   // Frame::progress of the frame being rendered
   Frame::ShadowMaskWriter shadowMaskHook;  // when set, Frame::shadowMask calls it instead (--shadow-hours)

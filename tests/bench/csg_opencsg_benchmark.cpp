@@ -14,12 +14,15 @@
 // its own program, headless, as a user runs it. Both contexts are Mesa's llvmpipe here; the CSV
 // names each renderer.
 //
-//   csg_opencsg_benchmark OUT [--quick] [--check] [--page FILE.md]
+//   csg_opencsg_benchmark OUT [--quick] [--goal] [--scene NAME]... [--check] [--page FILE.md]
 //
 // writes OUT.csv (one row per size, scene and method) and OUT.md (the table for the page, with the
 // machine and its load); --page FILE.md puts OUT.md into FILE.md between its markers
 // <!-- opencsg-benchmark begin --> and <!-- opencsg-benchmark end -->. tests/sweeps/plot_sweeps.py
-// draws OUT.svg from the CSV. --quick: 320x240, three scenes, three frames. --check: exit 1 unless
+// draws OUT.svg from the CSV. --quick: 320x240, three scenes, three frames. --goal: only the
+// comparison the lesson's automatic method is held to (OpenCSG Automatic, with and without
+// bounding boxes, and the lesson's automatic method), three rounds. --scene NAME: that scene only
+// (repeatable). --check: exit 1 unless
 // every lesson 14 method that accepts a scene covers exactly the pixels OpenCSG Automatic covers
 // (kOutlinePixels), or on a GL error. Exit 77 without an X display or a GLX context.
 #include <GL/glew.h>
@@ -34,6 +37,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -63,23 +67,20 @@ struct Size {
   std::string text() const { return std::to_string(width) + "x" + std::to_string(height); }
 };
 
-struct Row {
-  std::string size, scene, renderer, method;
-  int primitives = 0;
-  std::vector<double> roundMedians;
-  long long draws = 0, covered = 0, coverageDiff = -1;
-  double medianMs() const {
-    std::vector<double> v = roundMedians;
-    std::sort(v.begin(), v.end());
-    if (v.empty()) return 0;
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-  }
-};
-
 double median(std::vector<double> v) {
+  if (v.empty()) return 0;
   std::sort(v.begin(), v.end());
   return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
+
+struct Row {
+  std::string size, scene, renderer, method;
+  int primitives = 0;
+  std::vector<double> roundMedians, roundCpuMedians;  // wall and CPU milliseconds a frame, per round
+  long long draws = 0, covered = 0, coverageDiff = -1;
+  double medianMs() const { return median(roundMedians); }
+  double medianCpuMs() const { return median(roundCpuMedians); }
+};
 
 // ---- the GLX context ------------------------------------------------------------------------------
 
@@ -375,11 +376,15 @@ struct BenchScene {
 int main(int argc, char** argv) {
   stencil::keepFreedHeap();  // OpenCSG's side keeps its heap as the lesson's does
   if (argc < 2 || std::string(argv[1]) == "--help") {
-    std::cout << "usage: csg_opencsg_benchmark OUT [--quick] [--check] [--page FILE.md]   (writes OUT.csv, OUT.md)\n";
+    std::cout << "usage: csg_opencsg_benchmark OUT [--quick] [--goal] [--scene NAME]... [--check] [--page F.md]\n"
+                 "  (writes OUT.csv, OUT.md; --goal: OpenCSG Automatic, with and without bounding boxes,\n"
+                 "  and lesson 14's automatic method only; --scene: simple widget grid2d grid3d pipe\n"
+                 "  concave cuberack)\n";
     return argc < 2 ? 2 : 0;
   }
   const fs::path out = argv[1];
-  bool quick = false, check = false;
+  bool quick = false, check = false, goal = false;
+  std::vector<std::string> only;
   std::optional<fs::path> page;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
@@ -387,6 +392,10 @@ int main(int argc, char** argv) {
       quick = true;
     else if (a == "--check")
       check = true;
+    else if (a == "--goal")
+      goal = true;
+    else if (a == "--scene" && i + 1 < argc)
+      only.push_back(argv[++i]);
     else if (a == "--page" && i + 1 < argc)
       page = argv[++i];
     else {
@@ -409,21 +418,29 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  std::vector<BenchScene> scenes =
+      quick ? std::vector<BenchScene>{{"simple"}, {"grid2d"}, {"concave", true}}
+            : std::vector<BenchScene>{{"simple"},  {"widget"}, {"grid2d"},         {"grid3d"},
+                                      {"pipe"},    {"concave", true}, {"cuberack", false, true}};
+  for (const std::string& name : only)
+    if (std::none_of(scenes.begin(), scenes.end(), [&](const BenchScene& b) { return b.name == name; })) {
+      std::cerr << "csg_opencsg_benchmark: --scene " << name << ": not a benchmark scene (--help)\n";
+      return 2;
+    }
+  if (!only.empty())
+    std::erase_if(scenes, [&](const BenchScene& b) { return std::find(only.begin(), only.end(), b.name) == only.end(); });
+
+  Glx glx;
+  if (!glx.open()) return 77;
   const fs::path work = fs::temp_directory_path() / ("csg_opencsg_benchmark-" + std::to_string(getpid()));
   fs::create_directories(work);
   fs::create_directories(fs::absolute(out).parent_path());
 
-  Glx glx;
-  if (!glx.open()) return 77;
 
   const std::vector<Size> sizes = quick ? std::vector<Size>{{320, 240}} : std::vector<Size>{{320, 240}, {640, 480}};
-  const std::vector<BenchScene> scenes =
-      quick ? std::vector<BenchScene>{{"simple"}, {"grid2d"}, {"concave", true}}
-            : std::vector<BenchScene>{{"simple"},  {"widget"}, {"grid2d"},         {"grid3d"},
-                                      {"pipe"},    {"concave", true}, {"cuberack", false, true}};
   // The first frames pay for set-up (llvmpipe compiles a shader variant at a state's first use,
   // over the first few frames): left out of both sides' medians.
-  const int warmup = 2, frames = 3, rounds = quick ? 1 : 2;
+  const int warmup = 2, frames = 3, rounds = quick ? 1 : goal ? 3 : 2;
   // A measurement whose first round's median is longer than this is not repeated: its rounds'
   // spread is a small part of it, and the run stays within minutes.
   constexpr double kRepeatBelowMs = 400.0;
@@ -465,6 +482,7 @@ int main(int argc, char** argv) {
       std::vector<const OpenCsgSetting*> rowSetting;
       std::vector<const LessonMethod*> rowMethod;
       for (const OpenCsgSetting& s : settings) {
+        if (goal && s.algorithm != OpenCSG::Automatic) continue;
         if (bs.concave && s.algorithm == OpenCSG::SCS) continue;  // SCS: convex primitives only
         // The cube rack: Goldfeather's parity passes grow as n (n - 1), and its depth complexity
         // sampling (k n) took minutes a frame here too.
@@ -477,6 +495,7 @@ int main(int argc, char** argv) {
         rowMethod.push_back(nullptr);
       }
       for (const LessonMethod& m : methods) {
+        if (goal && m.name != "automatic") continue;
         if (bs.concave && m.convexOnly) continue;
         // The cube rack's depth complexity runs to dozens of layers: the layered methods take
         // tens of seconds a frame there, so the rack is the automatic method's alone.
@@ -493,17 +512,20 @@ int main(int argc, char** argv) {
           Row& row = sceneRows[r];
           if (round > 0 && row.roundMedians.front() > kRepeatBelowMs) continue;
           if (rowSetting[r]) {
-            std::vector<double> ms;
+            std::vector<double> ms, cpuMs;
             for (int f = 0; f < warmup + frames; ++f) {
               drawCount = 0;
               const auto start = std::chrono::steady_clock::now();
+              const std::clock_t cpuStart = std::clock();  // the process's: llvmpipe's threads too
               ocsg.frame(*rowSetting[r], view, projection);
               glFinish();
               const double t =
                   std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-              if (f >= warmup) ms.push_back(t);
+              const double cpu = 1000.0 * static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
+              if (f >= warmup) ms.push_back(t), cpuMs.push_back(cpu);
             }
             row.roundMedians.push_back(median(ms));
+            row.roundCpuMedians.push_back(median(cpuMs));
             row.draws = drawCount;
             if (round == 0) coverage[r] = coveredByDepth(size);
             if (GLenum e = glGetError(); e != GL_NO_ERROR) {
@@ -530,13 +552,17 @@ int main(int argc, char** argv) {
             for (const auto& t : json.json().at("frame_ms").at("all")) ms.push_back(t.get<double>());
             ms.erase(ms.begin(), ms.begin() + warmup);
             row.roundMedians.push_back(median(ms));
+            std::vector<double> cpuMs;
+            for (const auto& t : json.json().at("frame_cpu_ms").at("all")) cpuMs.push_back(t.get<double>());
+            cpuMs.erase(cpuMs.begin(), cpuMs.begin() + warmup);
+            row.roundCpuMedians.push_back(median(cpuMs));
             row.draws = json.total("draw_calls");
             if (lessonRenderer.empty()) lessonRenderer = json.json().at("renderer").get<std::string>();
             if (round == 0) coverage[r] = csgbench::readRawStencil(work / "stencil.raw.png", size.width, size.height);
           }
-          std::fprintf(stderr, "bench: %s %-9s %-8s %-20s %9.2f ms %7lld draws\n", size.text().c_str(),
-                       bs.name.c_str(), row.renderer.c_str(), row.method.c_str(), row.roundMedians.back(),
-                       row.draws);
+          std::fprintf(stderr, "bench: %s %-9s %-8s %-20s %9.2f ms %9.2f CPU ms %7lld draws\n",
+                       size.text().c_str(), bs.name.c_str(), row.renderer.c_str(), row.method.c_str(),
+                       row.roundMedians.back(), row.roundCpuMedians.back(), row.draws);
         }
       }
       // Coverage against OpenCSG Automatic's picture (measured on every scene).
@@ -570,10 +596,10 @@ int main(int argc, char** argv) {
   const std::string date = commandOutput("date -u +%Y-%m-%d");
 
   std::ofstream csv(out.string() + ".csv");
-  csv << "size,scene,primitives,renderer,method,frame_ms,draws,covered_px,coverage_diff_px\n";
+  csv << "size,scene,primitives,renderer,method,frame_ms,frame_cpu_ms,draws,covered_px,coverage_diff_px\n";
   for (const Row& r : rows)
     csv << r.size << "," << r.scene << "," << r.primitives << "," << r.renderer << "," << r.method << ","
-        << r.medianMs() << "," << r.draws << "," << r.covered << "," << r.coverageDiff << "\n";
+        << r.medianMs() << "," << r.medianCpuMs() << "," << r.draws << "," << r.covered << "," << r.coverageDiff << "\n";
   csv.close();
 
   // The page's table, one per size: a row per method, a column per scene.
@@ -585,43 +611,50 @@ int main(int argc, char** argv) {
      << cores << " cores, shared), " << u.sysname << " " << u.release << "; load average " << load
      << " (1, 5, 15 min) at the end. " << OPENCSG_VERSION_STRING << " on " << glx.renderer
      << " (GLX pbuffer); lesson 14 on " << lessonRenderer
-     << " (headless, its own process). Milliseconds a frame, draw calls a frame in brackets; after a "
-        "/, the pixels whose coverage differs from OpenCSG Automatic's picture; - not run (SCS on the "
+     << " (headless, its own process). Per size two tables: wall-clock milliseconds a frame, draw "
+        "calls a frame in brackets, after a /, the pixels whose coverage differs from OpenCSG Automatic's "
+        "picture; and CPU milliseconds a frame, every thread's (llvmpipe draws on the CPU: its CPU time "
+        "hardly changes when other work shares the machine; its wall time does). - not run (SCS on the "
         "concave scene; on the cube rack, OpenCSG's Goldfeather settings and the lesson's methods but the automatic one, tens of seconds to minutes a frame).\n\n";
   for (const Size& size : sizes) {
-    std::vector<std::pair<std::string, std::string>> methodsSeen;
-    for (const Row& r : rows)
-      if (r.size == size.text() && std::find(methodsSeen.begin(), methodsSeen.end(),
-                                             std::make_pair(r.renderer, r.method)) == methodsSeen.end())
-        methodsSeen.emplace_back(r.renderer, r.method);
-    md << "| " << size.text();
-    for (const BenchScene& bs : scenes) {
-      int n = 0;
+    for (const bool cpuTable : {false, true}) {
+      std::vector<std::pair<std::string, std::string>> methodsSeen;
       for (const Row& r : rows)
-        if (r.scene == bs.name) n = r.primitives;
-      md << " | " << bs.name << " (" << n << ")";
-    }
-    md << " |\n|---";
-    for (std::size_t i = 0; i < scenes.size(); ++i) md << "|---:";
-    md << "|\n";
-    for (const auto& [renderer, method] : methodsSeen) {
-      md << "| " << (renderer == "opencsg" ? "OpenCSG " : "lesson ") << method;
+        if (r.size == size.text() && std::find(methodsSeen.begin(), methodsSeen.end(),
+                                               std::make_pair(r.renderer, r.method)) == methodsSeen.end())
+          methodsSeen.emplace_back(r.renderer, r.method);
+      md << "| " << size.text() << (cpuTable ? ", CPU ms" : ", wall ms");
       for (const BenchScene& bs : scenes) {
-        const Row* found = nullptr;
+        int n = 0;
         for (const Row& r : rows)
-          if (r.size == size.text() && r.scene == bs.name && r.renderer == renderer && r.method == method) found = &r;
-        if (!found) {
-          md << " | -";
-          continue;
-        }
-        char cell[96];
-        std::snprintf(cell, sizeof cell, " | %.1f (%lld)", found->medianMs(), found->draws);
-        md << cell;
-        if (found->coverageDiff != 0) md << " / " << found->coverageDiff;
+          if (r.scene == bs.name) n = r.primitives;
+        md << " | " << bs.name << " (" << n << ")";
       }
-      md << " |\n";
+      md << " |\n|---";
+      for (std::size_t i = 0; i < scenes.size(); ++i) md << "|---:";
+      md << "|\n";
+      for (const auto& [renderer, method] : methodsSeen) {
+        md << "| " << (renderer == "opencsg" ? "OpenCSG " : "lesson ") << method;
+        for (const BenchScene& bs : scenes) {
+          const Row* found = nullptr;
+          for (const Row& r : rows)
+            if (r.size == size.text() && r.scene == bs.name && r.renderer == renderer && r.method == method) found = &r;
+          if (!found) {
+            md << " | -";
+            continue;
+          }
+          char cell[96];
+          if (cpuTable)
+            std::snprintf(cell, sizeof cell, " | %.1f", found->medianCpuMs());
+          else
+            std::snprintf(cell, sizeof cell, " | %.1f (%lld)", found->medianMs(), found->draws);
+          md << cell;
+          if (!cpuTable && found->coverageDiff != 0) md << " / " << found->coverageDiff;
+        }
+        md << " |\n";
+      }
+      md << "\n";
     }
-    md << "\n";
   }
   std::ofstream(out.string() + ".md") << md.str();
   std::cerr << "bench: wrote " << out.string() << ".csv and .md; load average " << load << "\n";
