@@ -22,9 +22,14 @@
 // draws OUT.svg from the CSV. --quick: 320x240, three scenes, three frames. --goal: only the
 // comparison the lesson's automatic method is held to (OpenCSG Automatic, with and without
 // bounding boxes, and the lesson's automatic method), three rounds. --scene NAME: that scene only
-// (repeatable). --check: exit 1 unless
-// every lesson 14 method that accepts a scene covers exactly the pixels OpenCSG Automatic covers
-// (kOutlinePixels), or on a GL error. Exit 77 without an X display or a GLX context.
+// (repeatable). --check: exit 1 unless every lesson 14 method that accepts a scene agrees with the
+// CSG ray cast off its edges (its own --set oracle=1) and the lesson's automatic method shows
+// the ray cast's primitive and depth on at least as many edge pixels as OpenCSG Automatic with
+// bounding boxes, or on a GL error. Exit 77 without an X display or a GLX context.
+//
+// Both sides are judged by the same CSG ray cast (geometry/csg.h: rayCastCsg, csgEdgePixels,
+// compareCsg, as lesson 14's oracle): OpenCSG's picture through an untimed pass after its frame
+// that draws each object's index where the shading pass drew it.
 #include <GL/glew.h>
 // GLEW before GL: GL/glx.h includes GL/gl.h.
 #include <GL/glx.h>
@@ -56,12 +61,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Pixels whose coverage may differ between a lesson method and OpenCSG Automatic: none. Both draw
-// the same triangles (the scene file's meshes) with the same matrices through the same rasterizer,
-// so where each keeps the right surface they cover the same pixels. (OpenCSG with bounding boxes
-// is reported, not held to this: it scissors each primitive to its box rounded to pixels.)
-constexpr long kOutlinePixels = 0;
-
 struct Size {
   int width, height;
   std::string text() const { return std::to_string(width) + "x" + std::to_string(height); }
@@ -78,6 +77,9 @@ struct Row {
   int primitives = 0;
   std::vector<double> roundMedians, roundCpuMedians;  // wall and CPU milliseconds a frame, per round
   long long draws = 0, covered = 0, coverageDiff = -1;
+  // Against the CSG ray cast (geometry/csg.h's compareCsg): pixels showing another primitive or
+  // depth, off the edges the geometry decides and on them; -1 where not judged.
+  long long offEdges = -1, onEdges = -1;
   double medianMs() const { return median(roundMedians); }
   double medianCpuMs() const { return median(roundCpuMedians); }
 };
@@ -207,9 +209,9 @@ long long drawCount = 0;  // draws in the current frame
 // (the modelview OpenCSG finds set).
 class MeshPrimitive final : public OpenCSG::Primitive {
  public:
-  MeshPrimitive(const GlMesh& mesh, const glm::mat4& model, const glm::vec3& colour, OpenCSG::Operation op,
-                unsigned convexity)
-      : OpenCSG::Primitive(op, convexity), mesh_(mesh), model_(model), colour_(colour) {}
+  MeshPrimitive(int object, const GlMesh& mesh, const glm::mat4& model, const glm::vec3& colour,
+                OpenCSG::Operation op, unsigned convexity)
+      : OpenCSG::Primitive(op, convexity), object_(object), mesh_(mesh), model_(model), colour_(colour) {}
   void render() override {
     glPushMatrix();
     glMultMatrixf(&model_[0][0]);
@@ -236,11 +238,13 @@ class MeshPrimitive final : public OpenCSG::Primitive {
     setBoundingBox(lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
   }
   void unbound() { setBoundingBox(-1, -1, -1, 1, 1, 1); }  // OpenCSG's default: no bound
+  int object() const { return object_; }  // its index in the scene file's objects
   const GlMesh& mesh() const { return mesh_; }
   const glm::mat4& model() const { return model_; }
   const glm::vec3& colour() const { return colour_; }
 
  private:
+  int object_;
   const GlMesh& mesh_;
   glm::mat4 model_;
   glm::vec3 colour_;
@@ -268,10 +272,10 @@ struct OpenCsgScene {
     for (const stencil::CsgProduct& p : sop.products) {
       auto& prims = products.emplace_back();
       for (int i : p.intersected)
-        prims.push_back(std::make_unique<MeshPrimitive>(*meshes[i], scene.objects[i].modelAt(0),
+        prims.push_back(std::make_unique<MeshPrimitive>(i, *meshes[i], scene.objects[i].modelAt(0),
                                                         scene.objects[i].colour, OpenCSG::Intersection, convexity));
       for (int i : p.subtracted)
-        prims.push_back(std::make_unique<MeshPrimitive>(*meshes[i], scene.objects[i].modelAt(0),
+        prims.push_back(std::make_unique<MeshPrimitive>(i, *meshes[i], scene.objects[i].modelAt(0),
                                                         scene.objects[i].colour, OpenCSG::Subtraction, convexity));
     }
   }
@@ -319,6 +323,42 @@ struct OpenCsgScene {
     glDepthFunc(GL_LESS);
     glDisable(GL_LIGHTING);
   }
+
+  // After a frame: which object each pixel shows, as the frame's shading pass chose it (its
+  // draws in the same order, GL_EQUAL against the solid's depth, the last one drawn winning a
+  // tie), and the depth; top row first, stencil::kNoSurface where nothing is drawn. Untimed.
+  void seen(const Size& size, std::vector<int>& object, std::vector<float>& depth) {
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_DITHER);
+    glDepthFunc(GL_EQUAL);
+    glDepthMask(GL_FALSE);
+    for (auto& prims : products)
+      for (auto& p : prims) {
+        const unsigned id = static_cast<unsigned>(p->object()) + 1;  // 0: nothing drawn
+        glColor3ub(static_cast<GLubyte>(id >> 16), static_cast<GLubyte>(id >> 8), static_cast<GLubyte>(id));
+        glPushMatrix();
+        glMultMatrixf(&p->model()[0][0]);
+        p->mesh().draw(false);
+        glPopMatrix();
+      }
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    const std::size_t w = static_cast<std::size_t>(size.width), h = static_cast<std::size_t>(size.height);
+    std::vector<GLubyte> rgb(w * h * 3);
+    std::vector<float> rows(w * h);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, size.width, size.height, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
+    glReadPixels(0, 0, size.width, size.height, GL_DEPTH_COMPONENT, GL_FLOAT, rows.data());
+    object.assign(w * h, stencil::kNoSurface);
+    depth.assign(w * h, 1.0f);
+    for (std::size_t i = 0; i < w * h; ++i) {
+      const std::size_t row = (h - 1 - i / w) * w + i % w;  // GL's rows bottom up
+      const unsigned id = (unsigned{rgb[3 * row]} << 16) | (unsigned{rgb[3 * row + 1]} << 8) | rgb[3 * row + 2];
+      object[i] = id == 0 ? stencil::kNoSurface : static_cast<int>(id) - 1;
+      depth[i] = rows[row];
+    }
+  }
 };
 
 // Pixels whose depth is nearer than the far plane, top row first.
@@ -364,6 +404,8 @@ struct LessonMethod {
   std::string name, settings;
   bool convexOnly = false;  // SCS: refuses nothing, draws a concave primitive wrong
 };
+
+enum class Table { Wall, Cpu, RayCast };  // the page's tables per size
 
 struct BenchScene {
   std::string name;
@@ -476,6 +518,22 @@ int main(int argc, char** argv) {
       const unsigned convexity = bs.concave ? 2 : 1;
       OpenCsgScene ocsg(scene, convexity);
       const int primitives = static_cast<int>(scene.objects.size());
+      // The CSG ray cast of the scene and the pixels its edges cross, as lesson 14's --set oracle=1
+      // makes them (oracle.cpp), once per scene and size: what each side's picture is judged by.
+      std::vector<stencil::CsgPrimitive> csgPrimitives;
+      std::vector<std::string> names;
+      for (const auto& o : scene.objects) {
+        csgPrimitives.push_back({&o.mesh, o.modelAt(0)});
+        names.push_back(o.name);
+      }
+      const stencil::CsgImage rayCast =
+          stencil::rayCastCsg(csgPrimitives, stencil::parseCsg(scene.csg, names), projection * view,
+                              {size.width, size.height});
+      GLint subpixelBits = 4;
+      glGetIntegerv(GL_SUBPIXEL_BITS, &subpixelBits);
+      const float snap = std::ldexp(1.0f, -std::max(subpixelBits, 4));
+      const std::vector<bool> edges =
+          stencil::csgEdgePixels(csgPrimitives, projection * view, {size.width, size.height}, snap);
 
       // This scene's rows, in the order they are measured each round.
       std::vector<Row> sceneRows;
@@ -527,7 +585,17 @@ int main(int argc, char** argv) {
             row.roundMedians.push_back(median(ms));
             row.roundCpuMedians.push_back(median(cpuMs));
             row.draws = drawCount;
-            if (round == 0) coverage[r] = coveredByDepth(size);
+            if (round == 0) {
+              coverage[r] = coveredByDepth(size);
+              std::vector<int> object;
+              std::vector<float> depth;
+              ocsg.seen(size, object, depth);
+              const stencil::CsgReport report =
+                  stencil::compareCsg(rayCast, depth, object, edges, 4.0f * std::ldexp(1.0f, -24), snap);
+              row.onEdges = static_cast<long long>(report.onEdges);
+              row.offEdges =
+                  static_cast<long long>(report.primitiveDisagreements + report.depthDisagreements - report.onEdges);
+            }
             if (GLenum e = glGetError(); e != GL_NO_ERROR) {
               std::cerr << "csg_opencsg_benchmark: GL error 0x" << std::hex << e << std::dec << " in OpenCSG "
                         << row.method << " on " << bs.name << "\n";
@@ -558,7 +626,23 @@ int main(int argc, char** argv) {
             row.roundCpuMedians.push_back(median(cpuMs));
             row.draws = json.total("draw_calls");
             if (lessonRenderer.empty()) lessonRenderer = json.json().at("renderer").get<std::string>();
-            if (round == 0) coverage[r] = csgbench::readRawStencil(work / "stencil.raw.png", size.width, size.height);
+            if (round == 0) {
+              coverage[r] = csgbench::readRawStencil(work / "stencil.raw.png", size.width, size.height);
+              // The same judgement, from the lesson's own oracle: one more frame, untimed.
+              const std::string judged = std::string(LESSON_14) + " --headless --quiet --size " + size.text() +
+                                         " --scene " + shellQuote(file.string()) + " " + m.settings +
+                                         (bs.concave ? " --set convexity=2" : "") + " --set oracle=1 --stats > " +
+                                         shellQuote(stats.string());
+              if (const int judgedStatus = std::system(judged.c_str()); judgedStatus != 0) {
+                std::cerr << "csg_opencsg_benchmark: failed (" << judgedStatus << "): " << judged << "\n";
+                return 1;
+              }
+              const auto oracle = stencil::testing::LessonStats::read(stats);
+              row.onEdges = static_cast<long long>(oracle.count("oracle_on_edges"));
+              row.offEdges = static_cast<long long>(oracle.count("oracle_primitive_disagreements") +
+                                                    oracle.count("oracle_depth_disagreements")) -
+                             row.onEdges;
+            }
           }
           std::fprintf(stderr, "bench: %s %-9s %-8s %-20s %9.2f ms %9.2f CPU ms %7lld draws\n",
                        size.text().c_str(), bs.name.c_str(), row.renderer.c_str(), row.method.c_str(),
@@ -576,13 +660,26 @@ int main(int argc, char** argv) {
           std::fprintf(stderr, "bench: %s %s %s %s: %lld pixels covered other than by OpenCSG automatic\n",
                        size.text().c_str(), bs.name.c_str(), sceneRows[r].renderer.c_str(),
                        sceneRows[r].method.c_str(), sceneRows[r].coverageDiff);
-        if (sceneRows[r].renderer == "lesson14" && sceneRows[r].coverageDiff > kOutlinePixels) {
-          std::fprintf(stderr, "bench: %s %s %s %s covers %lld pixels other than OpenCSG automatic\n",
-                       size.text().c_str(), bs.name.c_str(), sceneRows[r].renderer.c_str(),
-                       sceneRows[r].method.c_str(), sceneRows[r].coverageDiff);
+        if (sceneRows[r].renderer == "lesson14" && sceneRows[r].offEdges != 0) {
+          std::fprintf(stderr, "bench: %s %s lesson14 %s: %lld pixels off the ray cast, off its edges\n",
+                       size.text().c_str(), bs.name.c_str(), sceneRows[r].method.c_str(), sceneRows[r].offEdges);
           ok = false;
         }
         rows.push_back(sceneRows[r]);
+      }
+      // On the edges: the lesson's automatic method right at least as often as OpenCSG's.
+      const Row* lessonAutomatic = nullptr;
+      const Row* openCsgBoxes = nullptr;
+      for (const Row& row : sceneRows) {
+        if (row.renderer == "lesson14" && row.method == "automatic") lessonAutomatic = &row;
+        if (row.renderer == "opencsg" && row.method == "automatic+bbox") openCsgBoxes = &row;
+      }
+      if (lessonAutomatic && openCsgBoxes && lessonAutomatic->onEdges > openCsgBoxes->onEdges) {
+        std::fprintf(stderr,
+                     "bench: %s %s: lesson14 automatic is off the ray cast on %lld edge pixels, OpenCSG "
+                     "automatic+bbox on %lld\n",
+                     size.text().c_str(), bs.name.c_str(), lessonAutomatic->onEdges, openCsgBoxes->onEdges);
+        ok = false;
       }
     }
   }
@@ -596,10 +693,12 @@ int main(int argc, char** argv) {
   const std::string date = commandOutput("date -u +%Y-%m-%d");
 
   std::ofstream csv(out.string() + ".csv");
-  csv << "size,scene,primitives,renderer,method,frame_ms,frame_cpu_ms,draws,covered_px,coverage_diff_px\n";
+  csv << "size,scene,primitives,renderer,method,frame_ms,frame_cpu_ms,draws,covered_px,coverage_diff_px,"
+         "off_ray_cast_px,off_ray_cast_on_edges_px\n";
   for (const Row& r : rows)
     csv << r.size << "," << r.scene << "," << r.primitives << "," << r.renderer << "," << r.method << ","
-        << r.medianMs() << "," << r.medianCpuMs() << "," << r.draws << "," << r.covered << "," << r.coverageDiff << "\n";
+        << r.medianMs() << "," << r.medianCpuMs() << "," << r.draws << "," << r.covered << "," << r.coverageDiff
+        << "," << r.offEdges << "," << r.onEdges << "\n";
   csv.close();
 
   // The page's table, one per size: a row per method, a column per scene.
@@ -614,16 +713,19 @@ int main(int argc, char** argv) {
      << " (headless, its own process). Per size two tables: wall-clock milliseconds a frame, draw "
         "calls a frame in brackets, after a /, the pixels whose coverage differs from OpenCSG Automatic's "
         "picture; and CPU milliseconds a frame, every thread's (llvmpipe draws on the CPU: its CPU time "
-        "hardly changes when other work shares the machine; its wall time does). - not run (SCS on the "
+        "hardly changes when other work shares the machine; its wall time does); and each picture against the CSG "
+        "ray cast (the lesson's --set oracle=1, and the same for OpenCSG's picture): pixels showing another "
+        "primitive or depth off the edges the geometry decides, and in brackets on them. - not run (SCS on the "
         "concave scene; on the cube rack, OpenCSG's Goldfeather settings and the lesson's methods but the automatic one, tens of seconds to minutes a frame).\n\n";
   for (const Size& size : sizes) {
-    for (const bool cpuTable : {false, true}) {
+    for (const Table table : {Table::Wall, Table::Cpu, Table::RayCast}) {
       std::vector<std::pair<std::string, std::string>> methodsSeen;
       for (const Row& r : rows)
         if (r.size == size.text() && std::find(methodsSeen.begin(), methodsSeen.end(),
                                                std::make_pair(r.renderer, r.method)) == methodsSeen.end())
           methodsSeen.emplace_back(r.renderer, r.method);
-      md << "| " << size.text() << (cpuTable ? ", CPU ms" : ", wall ms");
+      md << "| " << size.text()
+         << (table == Table::Wall ? ", wall ms" : table == Table::Cpu ? ", CPU ms" : ", off the ray cast");
       for (const BenchScene& bs : scenes) {
         int n = 0;
         for (const Row& r : rows)
@@ -644,12 +746,14 @@ int main(int argc, char** argv) {
             continue;
           }
           char cell[96];
-          if (cpuTable)
+          if (table == Table::Cpu)
             std::snprintf(cell, sizeof cell, " | %.1f", found->medianCpuMs());
-          else
+          else if (table == Table::Wall)
             std::snprintf(cell, sizeof cell, " | %.1f (%lld)", found->medianMs(), found->draws);
+          else
+            std::snprintf(cell, sizeof cell, " | %lld (%lld)", found->offEdges, found->onEdges);
           md << cell;
-          if (!cpuTable && found->coverageDiff != 0) md << " / " << found->coverageDiff;
+          if (table == Table::Wall && found->coverageDiff != 0) md << " / " << found->coverageDiff;
         }
         md << " |\n";
       }
@@ -679,6 +783,7 @@ int main(int argc, char** argv) {
   fs::remove_all(work);
   if (!check) return 0;
   std::cerr << (ok ? "bench check ok: " : "bench check FAILED: ")
-            << "every lesson 14 method covers the pixels OpenCSG Automatic covers\n";
+            << "every lesson 14 method agrees with the CSG ray cast off its edges, and the automatic method on "
+               "as many edge pixels as OpenCSG automatic+bbox\n";
   return ok ? 0 : 1;
 }

@@ -419,9 +419,10 @@ def plot_csg(path):
 
 
 def plot_csg_opencsg(path):
-    """tests/bench/csg_opencsg_benchmark's CSV: per size, each scene's time a frame by every
-    OpenCSG setting (squares) and every lesson 14 method (circles), log scale."""
-    rows = read_rows(path, ["primitives", "frame_ms", "draws", "coverage_diff_px"],
+    """tests/bench/csg_opencsg_benchmark's CSV: per size, each scene's CPU time a frame (every
+    thread's: llvmpipe draws on the CPU, and its CPU time hardly changes when other work shares the
+    machine) by every OpenCSG setting (squares) and every lesson 14 method (circles), log scale."""
+    rows = read_rows(path, ["primitives", "frame_ms", "frame_cpu_ms", "draws", "coverage_diff_px"],
                      text=["size", "scene", "renderer", "method"])
     sizes, scenes, series = [], [], []
     for r in rows:
@@ -438,7 +439,7 @@ def plot_csg_opencsg(path):
                 for r in rows:
                     if (r["size"], r["scene"], r["renderer"], r["method"]) == (size, scene, renderer, method):
                         xs.append(j + (i - len(series) / 2) * 0.05)
-                        ys.append(r["frame_ms"])
+                        ys.append(r["frame_cpu_ms"])
             ax.plot(xs, ys, "s" if lib else "o", color=f"C{i % 10}", markerfacecolor="none" if lib else f"C{i % 10}",
                     markersize=6, label=("OpenCSG " if lib else "lesson ") + method)
         ax.set_yscale("log")
@@ -447,7 +448,7 @@ def plot_csg_opencsg(path):
         ax.set_xticklabels([f"{s}\n({int(next(r['primitives'] for r in rows if r['scene'] == s))})"
                             for s in scenes], fontsize=8)
         ax.grid(True, which="major", axis="y", alpha=0.3)
-        ax.set_ylabel(f"time per frame (ms, {size}, llvmpipe)")
+        ax.set_ylabel(f"CPU time per frame (ms, {size}, llvmpipe)")
         ax.set_title(f"OpenCSG's scenes at {size} (primitives)")
     axes[0][-1].legend(fontsize=7, ncol=2)
     return fig
