@@ -123,6 +123,10 @@ void Frame::count(std::string_view name, std::uint64_t amount) {
   recorder_.count(name, amount);
 }
 
+void Frame::checkFailed(std::string what) {
+  recorder_.checkFailed(std::move(what));
+}
+
 int OptionsChosen::value(std::string_view name) const {
   for (const Option& o : options)
     if (o.name == name) return o.value;
@@ -586,6 +590,8 @@ int finishRun(Session& s, const Image& colour, const Image& stencil, const std::
     std::cerr << "wrote " << goldenColourPath(*cl.golden, s.variant).string() << " and "
               << goldenStencilPath(*cl.golden, s.variant).string() << "\n";
   if (!shadowsRight) return 1;
+  for (const std::string& what : s.recorder->failedChecks()) std::cerr << what << "\n";
+  if (!s.recorder->failedChecks().empty()) return 1;
   if (!goldenCompared) return 0;
   // A failed comparison's artifacts are a set of their own: the test has failed (exit 1) whether
   // or not they can be written, and the line says which.

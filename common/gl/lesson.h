@@ -172,6 +172,10 @@ class Frame {
   // Adds to a named count of the lesson's own (e.g. "scene_renderings"), reported per frame
   // under "counts" in --stats: work that draw calls and triangles do not show.
   void count(std::string_view name, std::uint64_t amount = 1);
+  // The lesson's own check of this frame (an option such as lesson 14's `oracle`) found the
+  // picture wrong: a headless run writes what it was asked to, prints `what` (one line naming the
+  // check and the pixels) and exits 1, as --oracle does for the shadows.
+  void checkFailed(std::string what);
   // Runs draw while the pass's own occlusion query (--stats) is paused, so draw may run
   // GL_SAMPLES_PASSED queries of its own (GL allows one active query per target). The fragments
   // draw produces are left out of the pass's samples_passed.

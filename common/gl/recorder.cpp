@@ -74,6 +74,7 @@ void PassRecorder::beginFrame(FrameRequest request) {
   stats_.clear();
   snapshots_.clear();
   counts_.clear();
+  failedChecks_.clear();
   pausedSamples_.clear();
   checkGlErrors("before the frame");
   beginPass();

@@ -64,6 +64,7 @@ class PassRecorder {
   // were found.
   void pass(std::string_view name, std::string_view detail = {});
   void count(std::string_view name, std::uint64_t amount);  // a lesson's own count (Frame::count)
+  void checkFailed(std::string what) { failedChecks_.push_back(std::move(what)); }  // Frame::checkFailed
   // Ends the current pass's occlusion query early, keeping what it counted so far, and begins it
   // again: between the two the lesson may run its own (Frame::ownOcclusionQueries). No-ops
   // unless the frame is measured.
@@ -76,6 +77,8 @@ class PassRecorder {
   const std::vector<Snapshot>& snapshots() const { return snapshots_; }
   // The lesson's own counts in the last frame, in the order first counted.
   const std::vector<std::pair<std::string, std::uint64_t>>& counts() const { return counts_; }
+  // The lesson's own checks that failed in the last frame (Frame::checkFailed), a line each.
+  const std::vector<std::string>& failedChecks() const { return failedChecks_; }
 
  private:
   void beginPass();
@@ -95,6 +98,7 @@ class PassRecorder {
   std::uint64_t currentPaused_ = 0;
   std::vector<Snapshot> snapshots_;
   std::vector<std::pair<std::string, std::uint64_t>> counts_;
+  std::vector<std::string> failedChecks_;
   PassStats current_;
   std::chrono::steady_clock::time_point passStart_;
 };

@@ -442,6 +442,9 @@ class DepthComplexity final : public Lesson {
     f.count("oracle_disagreements", r.disagreements);
     f.count("oracle_on_edges", r.onEdges);
     f.count("oracle_expected_fragments", r.expectedTotal);
+    if (r.disagreements != r.onEdges)
+      f.checkFailed("oracle: " + std::to_string(r.disagreements - r.onEdges) +
+                    " pixels off the edges hold another count than the ray count");
   }
 };
 

@@ -241,7 +241,7 @@ LessonInfo lessonInfo() {
       {"stencil", 'T', "trim by the stencil (off: every candidate surface kept, the result wrong)", 1},
       {"oracle", 'K',
        "check the depth and the primitive each pixel shows against a CPU CSG ray cast\n"
-       "      (--stats reports oracle_*)",
+       "      (--stats reports oracle_*; headless, exit 1 where a pixel off the edges differs)",
        0},
   };
   info.variants = {

@@ -1,8 +1,10 @@
 // Lesson 14's test hook: the frame's depth and the primitive its stencil records, against the CSG
-// ray cast (geometry/csg.h), reported as --stats counts oracle_*.
+// ray cast (geometry/csg.h), reported as --stats counts oracle_*; a pixel wrong off the edges fails
+// the run (exit 1).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "csg_lesson.h"
@@ -57,6 +59,9 @@ void Csg::checkAgainstRayCast(Frame& f, const CsgScene& scene, const CsgTree& tr
   f.count("oracle_on_edges", r.onEdges);
   f.count("oracle_edge_pixels", r.edgePixels);
   f.count("oracle_largest_depth_error_1e9", static_cast<std::uint64_t>(r.largestDepthError * 1e9f));
+  if (!r.passed())
+    f.checkFailed("oracle: " + std::to_string(r.primitiveDisagreements + r.depthDisagreements - r.onEdges) +
+                  " pixels off the edges show another primitive or depth than the CSG ray cast");
 }
 
 }  // namespace stencil::csg_lesson

@@ -632,8 +632,10 @@ int main(int argc, char** argv) {
               const std::string judged = std::string(LESSON_14) + " --headless --quiet --size " + size.text() +
                                          " --scene " + shellQuote(file.string()) + " " + m.settings +
                                          (bs.concave ? " --set convexity=2" : "") + " --set oracle=1 --stats > " +
-                                         shellQuote(stats.string());
-              if (const int judgedStatus = std::system(judged.c_str()); judgedStatus != 0) {
+                                         shellQuote(stats.string()) + " 2> /dev/null";
+              // Exit 1: the oracle found pixels wrong off the edges; its counts say how many.
+              if (const int judgedStatus = std::system(judged.c_str());
+                  !WIFEXITED(judgedStatus) || WEXITSTATUS(judgedStatus) > 1) {
                 std::cerr << "csg_opencsg_benchmark: failed (" << judgedStatus << "): " << judged << "\n";
                 return 1;
               }
