@@ -141,9 +141,10 @@ def count_groups():
     old = {"built-in (`zfail`)": ("3, 1544, 11817", "3, 1544, 11818 (no fold: the bounds add up to less than 256)"),
            "`staircase-256-nested-volumes`": ("1, 2566, 8644320", "10, 2588, 8764173 (5 pieces, 5 folds)"),
            "`slabs-1000-nested-volumes`": ("1, 20000, 9544970", "32, 12064, 9672522 (16 pieces, 16 folds)")}
+    hard = ROOT / "tests/scenes/hard"
     scenes = {"built-in (`zfail`)": ["--variant", "zfail"],
-              "`staircase-256-nested-volumes`": ["--scene", str(ROOT / "tests/scenes/hard/staircase-256-nested-volumes.scene")],
-              "`slabs-1000-nested-volumes`": ["--scene", str(ROOT / "tests/scenes/hard/slabs-1000-nested-volumes.scene")]}
+              "`staircase-256-nested-volumes`": ["--scene", str(hard / "staircase-256-nested-volumes.scene")],
+              "`slabs-1000-nested-volumes`": ["--scene", str(hard / "slabs-1000-nested-volumes.scene")]}
     lines = ["| scene | before | runs of 127 faces | regions |", "|---|---|---|---|"]
     for name, args in scenes.items():
         run = ["--size", "320x240", "--set", "mark=0"] + args
