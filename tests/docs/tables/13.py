@@ -1,5 +1,8 @@
 """Lesson 13's generated tables (docs/13-depth-complexity.md): its oracle, its scene files and the
 shadow volumes' fill."""
+import concurrent.futures
+import os
+
 from page_tables import ROOT, lesson, merged, stats
 
 def depth_oracle():
@@ -56,6 +59,13 @@ def depth_scenes():
 FILL_METHODS = ["McGuire", "Everitt-Kilgard", "Lengyel", "z-pass"]
 
 
+def prefetch(runs):
+    """stats() of every (exe, args) in RUNS, as many at once as the machine has cores: the fill
+    table's 240 runs one after the other pass ctest's time limit on a loaded machine."""
+    with concurrent.futures.ThreadPoolExecutor(os.cpu_count() or 1) as pool:
+        list(pool.map(lambda run: stats(*run), runs))  # list(): a failed run ends the script here
+
+
 def shadow_fill():
     """Every fragment of the shadow volumes (--set volumes=M: counted_fragments), per method, on each
     hard-case scene file and the interior, 640x480, t = 1, the lights' bounds on (the interior once
@@ -66,13 +76,17 @@ def shadow_fill():
     runs = [(s, "1") for s in sorted((ROOT / "tests/scenes/hard").glob("*.scene"))] + [(interior, "1"), (interior, "0")]
     lines = ["| scene | bounds | lights | " + " | ".join(FILL_METHODS) + " | EK / McGuire | = lesson 16 |",
              "|---|---|---|" + "---|" * len(FILL_METHODS) + "---|---|"]
+    def common(scene, bounds):
+        return ["--size", "640x480", "--scene", str(scene), "--set", f"bounds={bounds}"]
+    prefetch([run for scene, bounds in runs for m in range(len(FILL_METHODS)) for run in (
+        (lesson("13-depth-complexity"), common(scene, bounds) + ["--set", f"volumes={m + 1}"]),
+        (lesson("16-fast-robust-shadows"), common(scene, bounds) + ["--set", "fill=1", "--set", f"method={m}"]))])
     saturated_notes, differs_notes = [], []
     for scene, bounds in runs:
         row, differs, lights, stopped = [], [], 0, False
         for m, method in enumerate(FILL_METHODS):
-            common = ["--size", "640x480", "--scene", str(scene), "--set", f"bounds={bounds}"]
-            l13 = stats(lesson("13-depth-complexity"), common + ["--set", f"volumes={m + 1}"])["counts"]
-            l16 = stats(lesson("16-fast-robust-shadows"), common + ["--set", "fill=1", "--set", f"method={m}"])
+            l13 = stats(lesson("13-depth-complexity"), common(scene, bounds) + ["--set", f"volumes={m + 1}"])["counts"]
+            l16 = stats(lesson("16-fast-robust-shadows"), common(scene, bounds) + ["--set", "fill=1", "--set", f"method={m}"])
             counted, lights = l13["counted_fragments"], l13["lights_drawn"]
             fill = sum(p["samples_passed"] for p in l16["passes"] if p["name"] == "volume-fill")
             if l13["saturated_pixels"]:  # the stencil stopped at 255: lesson 16's count, and how short the sum fell
