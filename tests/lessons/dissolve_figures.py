@@ -7,11 +7,12 @@ k = 0, 32, 64, 128, 192, 224, 256 side by side (the painted mask: k = 128 at tim
 the brush's stroke growing); crop-<pattern>.png for white noise, Bayer and blue noise: the centre
 40x40 pixels at k = 64, 128, 192, each scene flat (A red, B blue), magnified 4 times; and
 start-clamped-crop.png: the top left 80x60 pixels of the clamped reference's state 0, magnified 4
-times. Then prints Markdown tables from the lesson's --stats (--set measure=1): each pattern's
-clumpiness (8x8 coverage variance) and making time; fragments per method; and the CPU time per
-frame (llvmpipe draws on the CPU; CPU time, unlike wall time, hardly changes when other work shares
-the machine) per method, pattern and state, with and without WORK iterations of extra work per
-fragment: FRAMES + 1 frames less one frame (which writes the pattern), over FRAMES.
+times. Then prints two Markdown tables of times: each pattern's making time (wall time, the
+lesson's --stats with --set measure=1); and the CPU time per frame (llvmpipe draws on the CPU; CPU time,
+unlike wall time, hardly changes when other work shares the machine) per method, pattern and state,
+with and without WORK iterations of extra work per fragment: FRAMES + 1 frames less one frame
+(which writes the pattern), over FRAMES. The page's counts (clumpiness, fragments) are written by
+tests/docs/page_tables.py.
 
     tests/lessons/dissolve_figures.py BUILD_DIR [--no-strips] [--no-timing]
     tests/lessons/dissolve_figures.py BUILD_DIR --figures-only OUT_DIR    # the pictures only, into OUT_DIR
@@ -165,25 +166,14 @@ def strips(exe, out):
 
 
 def tables(exe, timing):
-    print("| pattern | making it, 320x240 (ms) | variance k=32 | k=64 | k=128 | k=192 | mean over k=1..255 |")
-    print("|---|---|---|---|---|---|---|")
+    """The times only: the page's counts (clumpiness, fragments) are written by tests/docs/page_tables.py
+    (tests/docs/tables/12.py)."""
+    print("| pattern | making it, 320x240 (ms) |")
+    print("|---|---|")
     for p in range(6):
         c = stats(exe, ["--size", "320x240", "--variant", "dissolve", "--set", f"pattern={p}", "--set", "step=128",
                         "--set", "measure=1"])["counts"]
-        v = [c[f"coverage_variance_e9.k{k}"] * 1e-9 for k in (32, 64, 128, 192)]
-        print(f"| {PATTERNS[p]} | {c['pattern_us'] / 1000:.0f} | " + " | ".join(f"{x:.2e}" for x in v)
-              + f" | {c['coverage_variance_e9.mean'] * 1e-9:.2e} |")
-    print()
-    print("| pattern | method | pixels | samples passed | fragments shaded (pipeline statistics) |")
-    print("|---|---|---|---|---|")
-    for p in (2, 3):
-        for m in range(3):
-            c = stats(exe, ["--size", "320x240", "--variant", "dissolve", "--set", f"pattern={p}", "--set", "step=128",
-                            "--set", f"method={m}", "--set", "measure=1"])["counts"]
-            print(f"| {PATTERNS[p]} | {METHODS[m]} | {c['pixels']} | {c['samples_passed']} | "
-                  f"{c.get('fragments_shaded', 'n/a')} |")
-    print(f"| (either) | scene A whole, scene B whole | | | {c.get('whole_a_fragments_shaded', 'n/a')}, "
-          f"{c.get('whole_b_fragments_shaded', 'n/a')} |")
+        print(f"| {PATTERNS[p]} | {c['pattern_us'] / 1000:.0f} |")
     if not timing:
         return
     print()

@@ -1,12 +1,11 @@
 #!/usr/bin/env python3
-"""Lesson 11's measurement table: per method, the ring's width along the figure's outline (mean,
-and min and max as fractions of the mean), halo pixels over the figure, pixels blended more than
-once, the fragments the shell rasterizes (every test off) and those the halo pass lets through
-(samples_passed), its draw calls, and the halo pass's time (the median over RUNS runs of FRAMES
-frames of its CPU time, which waits for the GPU: glFinish; and its GPU time where the driver's
-timer can be trusted).
+"""Lesson 11's halo pass times, per method and size: the median over RUNS runs of the last of FRAMES
+frames of the pass's CPU time, which waits for the GPU (glFinish), and its GPU time where the
+driver's timer can be trusted. A recorded run, never a test: the page says the machine and its
+load. The page's counts table (widths, fragments, blends) is written by tests/docs/page_tables.py
+(tests/docs/tables/11.py).
 
-    tests/lessons/halo_table.py BUILD_DIR [SIZE] [--backend B]    # SIZE 640x480 by default
+    tests/lessons/halo_table.py BUILD_DIR [SIZE...] [--backend B]    # 640x480 and 320x240 by default
 """
 import pathlib
 import statistics
@@ -32,31 +31,26 @@ def main():
     if not args or "--help" in sys.argv:
         sys.exit(__doc__)
     exe = pathlib.Path(args[0]) / "lessons" / "11-halo"
-    size = args[1] if len(args) > 1 else "640x480"
-    common = ["--size", size] + extra
+    sizes = args[1:] or ["640x480", "320x240"]
     renderer = None
-    print("| method | width mean (px) | min / mean | max / mean | over the figure | blended twice | "
-          "shell fragments | blended | draw calls | halo pass CPU ms | GPU ms |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
-    for m, name in enumerate(METHODS):
-        counted = stats(exe, common + ["--set", f"method={m}", "--set", "show=1"])
-        c = counted["counts"]
-        mean = c["figure.width_mean_x100"] / 100
-        cpu, gpu = [], []
-        for _ in range(RUNS):
-            s = stats(exe, common + ["--set", f"method={m}", "--frames", str(FRAMES)])
-            renderer = s["renderer"]
-            cpu.append(halo_pass(s)["cpu_ms"])
-            if halo_pass(s).get("gpu_ms") is not None:
-                gpu.append(halo_pass(s)["gpu_ms"])
-        h = halo_pass(counted)
-        # llvmpipe's timer queries return numbers, but not the time the CPU spent rasterizing.
-        gpu_text = f"{statistics.median(gpu):.3f}" if gpu and "llvmpipe" not in renderer else "n/a"
-        print(f"| {name} | {mean:.2f} | {c['figure.width_min_x100'] / 100 / mean:.2f} | "
-              f"{c['figure.width_max_x100'] / 100 / mean:.2f} | {c['figure.covered_pixels']} | "
-              f"{c['figure.multi_blended_pixels']} | {c['figure.shell_fragments']} | {h['samples_passed']} | "
-              f"{h['draw_calls']} | {statistics.median(cpu):.2f} | {gpu_text} |")
-    print(f"\n{size}, {renderer}; times: median of {RUNS} runs, the last of {FRAMES} frames each.")
+    rows = {name: [] for name in METHODS}
+    for size in sizes:
+        for m, name in enumerate(METHODS):
+            cpu, gpu = [], []
+            for _ in range(RUNS):
+                s = stats(exe, ["--size", size] + extra + ["--set", f"method={m}", "--frames", str(FRAMES)])
+                renderer = s["renderer"]
+                cpu.append(halo_pass(s)["cpu_ms"])
+                if halo_pass(s).get("gpu_ms") is not None:
+                    gpu.append(halo_pass(s)["gpu_ms"])
+            # llvmpipe's timer queries return numbers, but not the time the CPU spent rasterizing.
+            gpu_text = f"{statistics.median(gpu):.3f}" if gpu and "llvmpipe" not in renderer else "n/a"
+            rows[name] += [f"{statistics.median(cpu):.2f}", gpu_text]
+    print("| method | " + " | ".join(f"{size} CPU ms | GPU ms" for size in sizes) + " |")
+    print("|---|" + "---|---|" * len(sizes))
+    for name, cells in rows.items():
+        print(f"| {name} | " + " | ".join(cells) + " |")
+    print(f"\n{renderer}; the halo pass, median of {RUNS} runs, the last of {FRAMES} frames each.")
 
 
 if __name__ == "__main__":

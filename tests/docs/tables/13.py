@@ -1,4 +1,8 @@
-"""Lesson 13's generated tables (docs/13-depth-complexity.md): its oracle and its scene files."""
+"""Lesson 13's generated tables (docs/13-depth-complexity.md): its oracle, its scene files and the
+shadow volumes' fill."""
+import concurrent.futures
+import os
+
 from page_tables import ROOT, lesson, merged, stats
 
 def depth_oracle():
@@ -52,5 +56,61 @@ def depth_scenes():
     return lines
 
 
+FILL_METHODS = ["McGuire", "Everitt-Kilgard", "Lengyel", "z-pass"]
+
+
+def prefetch(runs):
+    """stats() of every (exe, args) in RUNS, as many at once as the machine has cores: the fill
+    table's 240 runs one after the other pass ctest's time limit on a loaded machine."""
+    with concurrent.futures.ThreadPoolExecutor(os.cpu_count() or 1) as pool:
+        list(pool.map(lambda run: stats(*run), runs))  # list(): a failed run ends the script here
+
+
+def shadow_fill():
+    """Every fragment of the shadow volumes (--set volumes=M: counted_fragments), per method, on each
+    hard-case scene file and the interior, 640x480, t = 1, the lights' bounds on (the interior once
+    more with them off), against lesson 16's volume-fill samples for the same run (--set fill=1).
+    Where the 8-bit count saturates, lesson 13's sum falls short: the cell shows lesson 16's count,
+    with a dagger; a row whose totals are not lesson 16's says DIFFERS, and a note gives lesson 16's."""
+    interior = ROOT / "tests/scenes/interior-many-lights.scene"
+    runs = [(s, "1") for s in sorted((ROOT / "tests/scenes/hard").glob("*.scene"))] + [(interior, "1"), (interior, "0")]
+    lines = ["| scene | bounds | lights | " + " | ".join(FILL_METHODS) + " | EK / McGuire | = lesson 16 |",
+             "|---|---|---|" + "---|" * len(FILL_METHODS) + "---|---|"]
+    def common(scene, bounds):
+        return ["--size", "640x480", "--scene", str(scene), "--set", f"bounds={bounds}"]
+    prefetch([run for scene, bounds in runs for m in range(len(FILL_METHODS)) for run in (
+        (lesson("13-depth-complexity"), common(scene, bounds) + ["--set", f"volumes={m + 1}"]),
+        (lesson("16-fast-robust-shadows"), common(scene, bounds) + ["--set", "fill=1", "--set", f"method={m}"]))])
+    saturated_notes, differs_notes = [], []
+    for scene, bounds in runs:
+        row, differs, lights, stopped = [], [], 0, False
+        for m, method in enumerate(FILL_METHODS):
+            l13 = stats(lesson("13-depth-complexity"), common(scene, bounds) + ["--set", f"volumes={m + 1}"])["counts"]
+            l16 = stats(lesson("16-fast-robust-shadows"), common(scene, bounds) + ["--set", "fill=1", "--set", f"method={m}"])
+            counted, lights = l13["counted_fragments"], l13["lights_drawn"]
+            fill = sum(p["samples_passed"] for p in l16["passes"] if p["name"] == "volume-fill")
+            if l13["saturated_pixels"]:  # the stencil stopped at 255: lesson 16's count, and how short the sum fell
+                stopped = True
+                row.append((fill, f"{fill:,}&dagger;"))
+                saturated_notes.append(f"{scene.name}, {method}: {counted:,} stored, "
+                                       f"{l13['saturated_pixels']:,} pixels at 255+")
+            else:
+                if counted != fill:
+                    differs.append(f"{method} {fill:,}")
+                row.append((counted, f"{counted:,}"))
+        ratio = f"{row[1][0] / row[0][0]:.2f}" if row[0][0] else "-"
+        if differs:
+            differs_notes.append(f"{scene.name}: " + ", ".join(differs))
+        same = "DIFFERS" if differs else "255+" if stopped else "="
+        lines.append(f"| `{scene.relative_to(ROOT / 'tests/scenes')}` | {'on' if bounds == '1' else 'off'} | {lights} | "
+                     + " | ".join(text for _, text in row) + f" | {ratio} | {same} |")
+    if saturated_notes:
+        lines += ["", "&dagger; lesson 16's count; lesson 13's stencil saturated: " + "; ".join(saturated_notes) + "."]
+    if differs_notes:
+        lines += ["", "DIFFERS: lesson 16's `volume-fill` count where it is not lesson 13's: "
+                  + "; ".join(differs_notes) + "."]
+    return lines
+
+
 PAGE = "docs/13-depth-complexity.md"
-TABLES = {"13-oracle": depth_oracle, "13-scenes": depth_scenes}
+TABLES = {"13-oracle": depth_oracle, "13-scenes": depth_scenes, "13-fill": shadow_fill}
