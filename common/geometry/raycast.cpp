@@ -20,28 +20,63 @@ constexpr double kParallelSine = 1e-6;
 
 constexpr std::uint32_t kLeafSize = 4;
 
-// Möller & Trumbore, "Fast, minimum storage ray-triangle intersection" (1997). The
-// comparisons are written so that a NaN anywhere reads as a miss.
+// Watertight: Woop, Benthin & Wald, "Watertight Ray/Triangle Intersection" (JCGT 2013). The
+// corners are moved to the ray's origin and sheared so that the ray runs down the z axis; the
+// edge functions U, V, W are then 2D cross products of corners, and an edge shared by two
+// triangles (the same two corner positions) gives the same value in both, negated, bit for bit:
+// no ray passes between two triangles. A ray through a shared edge or corner (an edge function
+// exactly 0, in double as well) is given to exactly one of the triangles that meet there, by a
+// rule on the edge's direction (as a rasterizer's top-left rule gives a pixel centre on a shared
+// edge to one triangle), reversed for a triangle seen from behind, so that a ray grazing a
+// silhouette edge crosses both of its faces or neither: a closed surface is crossed as often in
+// as out. The comparisons are written so that a NaN anywhere reads as a miss.
+struct Sheared {
+  double x, y;
+};
+
+// Whether a ray exactly on the edge from p to q (sheared corners) goes to a triangle seen from the
+// front that runs along the edge in this direction; its neighbour runs along it the other way.
+inline bool ownsEdge(const Sheared& p, const Sheared& q) {
+  const double dx = q.x - p.x, dy = q.y - p.y;
+  return dy > 0.0 || (dy == 0.0 && dx < 0.0);
+}
+
 inline bool hitTriangle(const glm::vec3& origin, const glm::vec3& direction, const glm::vec3& a,
                         const glm::vec3& b, const glm::vec3& c, float tMin, float tMax, float& tOut) {
-  const glm::vec3 e1 = b - a;
-  const glm::vec3 e2 = c - a;
-  const glm::vec3 p = glm::cross(direction, e2);
-  const float det = glm::dot(e1, p);
-  // det = -direction . (e1 x e2): relative to the lengths it is the product of the two sines.
-  const double scale =
-      static_cast<double>(glm::dot(direction, direction)) * glm::dot(e1, e1) * glm::dot(e2, e2);
-  if (!(static_cast<double>(det) * det > kParallelSine * kParallelSine * scale)) return false;
-  const float inverse = 1.0f / det;
-  const glm::vec3 s = origin - a;
-  const float u = glm::dot(s, p) * inverse;
-  if (!(u >= 0.0f && u <= 1.0f)) return false;
-  const glm::vec3 q = glm::cross(s, e1);
-  const float v = glm::dot(direction, q) * inverse;
-  if (!(v >= 0.0f && u + v <= 1.0f)) return false;
-  const float t = glm::dot(e2, q) * inverse;
+  // The ray's largest axis becomes z; x and y follow it, swapped where it points down z so the
+  // winding is kept.
+  const glm::vec3 magnitude = glm::abs(direction);
+  const int kz = magnitude.x > magnitude.y ? (magnitude.x > magnitude.z ? 0 : 2) : (magnitude.y > magnitude.z ? 1 : 2);
+  int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+  if (!(direction[kz] != 0.0f)) return false;
+  if (direction[kz] < 0.0f) std::swap(kx, ky);
+  const float sx = direction[kx] / direction[kz], sy = direction[ky] / direction[kz], sz = 1.0f / direction[kz];
+  const glm::vec3 pa = a - origin, pb = b - origin, pc = c - origin;
+  const float ax = pa[kx] - sx * pa[kz], ay = pa[ky] - sy * pa[kz];
+  const float bx = pb[kx] - sx * pb[kz], by = pb[ky] - sy * pb[kz];
+  const float cx = pc[kx] - sx * pc[kz], cy = pc[ky] - sy * pc[kz];
+  // In double, where a product of two floats is exact, so each function's sign and its zero are
+  // exact, and the same for every triangle on the edge (the paper falls back to double only at 0).
+  const double u = static_cast<double>(cx) * by - static_cast<double>(cy) * bx;
+  const double v = static_cast<double>(ax) * cy - static_cast<double>(ay) * cx;
+  const double w = static_cast<double>(bx) * ay - static_cast<double>(by) * ax;
+  if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return false;
+  const double det = u + v + w;
+  if (!(det != 0.0)) return false;
+  // Near-degenerate triangles and rays in their plane, as before: t would be noise.
+  const glm::vec3 e1 = b - a, e2 = c - a;
+  const double scale = static_cast<double>(glm::dot(direction, direction)) * glm::dot(e1, e1) * glm::dot(e2, e2);
+  const double sine = static_cast<double>(glm::dot(e1, glm::cross(direction, e2)));
+  if (!(sine * sine > kParallelSine * kParallelSine * scale)) return false;
+  // On an edge (its function 0): the triangle takes the ray only if it owns the edge.
+  const bool behind = det < 0.0;
+  const Sheared sa{ax, ay}, sb{bx, by}, sc{cx, cy};
+  if (u == 0.0 && ownsEdge(sb, sc) == behind) return false;  // U: the edge b-c
+  if (v == 0.0 && ownsEdge(sc, sa) == behind) return false;  // V: the edge c-a
+  if (w == 0.0 && ownsEdge(sa, sb) == behind) return false;  // W: the edge a-b
+  const double t = (u * (sz * pa[kz]) + v * (sz * pb[kz]) + w * (sz * pc[kz])) / det;
   if (!(t > tMin && t < tMax)) return false;
-  tOut = t;
+  tOut = static_cast<float>(t);
   return true;
 }
 
