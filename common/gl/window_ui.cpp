@@ -417,7 +417,7 @@ std::optional<std::string> fullWidthCombo(const char* id, const std::string& lab
 
 // An integer slider `width` wide with `label` beside it, its text beside its grab rather than over
 // it: in the wider of the two parts of the frame the grab leaves, `text` where it fits there, else
-// `shortText` (else that, clipped, and said as cut). While a typed edit is open (ctrl+click) ImGui
+// as much of it as fits with "...", else `shortText` (else that, clipped, and said as cut). While a typed edit is open (ctrl+click) ImGui
 // draws the field. Returns whether the value changed; `hovered` says whether the pointer is on it.
 bool sliderBesideGrab(const std::string& label, int* value, int min, int max, const std::string& text,
                       const std::string& shortText, float width, bool& hovered, PanelFit& fit) {
@@ -443,8 +443,17 @@ bool sliderBesideGrab(const std::string& label, int* value, int min, int max, co
     const float rightFrom = grabRight + style.FramePadding.x, rightTo = b.x - style.FramePadding.x;
     const bool right = rightTo - rightFrom >= leftTo - leftFrom;
     const float from = right ? rightFrom : leftFrom, to = right ? rightTo : leftTo;
+    // Else the longest start of `text` that fits with "..." (the number first: "8: shadows (li..."),
+    // else the short text.
     std::string shown = text;
-    if (ImGui::CalcTextSize(shown.c_str()).x > to - from) shown = shortText;
+    if (ImGui::CalcTextSize(shown.c_str()).x > to - from) {
+      shown = shortText;
+      for (std::size_t n = text.size(); n-- > shortText.size();)
+        if (const std::string start = text.substr(0, n) + "..."; ImGui::CalcTextSize(start.c_str()).x <= to - from) {
+          shown = start;
+          break;
+        }
+    }
     const float w = ImGui::CalcTextSize(shown.c_str()).x;
     if (w > to - from) fit.cut.push_back(label + " " + shown);
     const float x = w > to - from ? from : from + (to - from - w) / 2;
@@ -624,8 +633,10 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
   const float viewsEnd = ImGui::GetCursorPosY();
   const std::string passName = stepName(s, st.passStep);
   bool hovered = false;
-  if (sliderBesideGrab("after pass [P]", &st.passStep, -1, passesRun(s) - 1, passName,
-                       st.passStep < 0 ? "finished" : std::to_string(st.passStep + 1), stepperWidth, hovered, fit))
+  const std::string stepNumber = std::to_string(st.passStep + 1);
+  if (sliderBesideGrab("after pass [P]", &st.passStep, -1, passesRun(s) - 1,
+                       st.passStep < 0 ? passName : stepNumber + ": " + passName,
+                       st.passStep < 0 ? "finished" : stepNumber, stepperWidth, hovered, fit))
     sayStep(st);
   if (hovered) ImGui::SetTooltip("%s", passName.c_str());  // the name the slider may have shortened
   checkCut("after pass [P]");
