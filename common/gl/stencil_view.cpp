@@ -137,18 +137,19 @@ float colourDistance(const Rgb& a, const Rgb& b) {
 
 std::array<Rgb, 256> stencilPictureColours(const std::vector<std::uint64_t>& histogram) {
   // The colours a clashing value may take instead: every sRGB colour whose channels are multiples
-  // of 255/7, 512 colours spread over the whole gamut.
+  // of 255/11, 1728 colours spread over the whole gamut (fine enough that 24 values always find
+  // colours kStencilDistinct apart; 255/7's 512 did not).
   struct Candidate {
     Rgb rgb;
     Lab lab;
   };
   static const std::vector<Candidate> kCandidates = [] {
     std::vector<Candidate> all;
-    for (int r = 0; r < 8; ++r)
-      for (int g = 0; g < 8; ++g)
-        for (int b = 0; b < 8; ++b) {
-          const Rgb c{static_cast<std::uint8_t>(r * 255 / 7), static_cast<std::uint8_t>(g * 255 / 7),
-                      static_cast<std::uint8_t>(b * 255 / 7)};
+    for (int r = 0; r < 12; ++r)
+      for (int g = 0; g < 12; ++g)
+        for (int b = 0; b < 12; ++b) {
+          const Rgb c{static_cast<std::uint8_t>(r * 255 / 11), static_cast<std::uint8_t>(g * 255 / 11),
+                      static_cast<std::uint8_t>(b * 255 / 11)};
           all.push_back({c, toLab(c)});
         }
     return all;

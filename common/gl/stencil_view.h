@@ -19,14 +19,15 @@ std::array<std::uint8_t, 3> stencilColour(std::uint8_t value);
 
 // How far apart two colours look: the CIE76 colour difference (Euclidean distance in CIELAB,
 // D65 white) of two sRGB byte triples. About 2.3 is just noticeable; kStencilDistinct apart,
-// two flat regions side by side read as different colours at a glance.
+// two flat regions side by side read as different colours at a glance, on a projector too (25
+// apart, values of a 21-value picture looked alike there).
 float colourDistance(const std::array<std::uint8_t, 3>&, const std::array<std::uint8_t, 3>&);
-constexpr float kStencilDistinct = 25.0f;
+constexpr float kStencilDistinct = 35.0f;
 
 // The colours one stencil picture gives its values, histogram[v] pixels holding v (256 entries):
 // each present value keeps stencilColour(v) unless that lies within kStencilDistinct of black or
 // of a colour already given (values taken 0 first, then by pixel count, most first); such a value
-// gets the sRGB colour (channels multiples of 255/7) farthest from all those already given. Up to
+// gets the sRGB colour (channels multiples of 255/11) farthest from all those already given. Up to
 // 24 present values are all kStencilDistinct apart (tests/unit/test_stencil_view.cpp). Values not
 // present get their stencilColour.
 std::array<std::array<std::uint8_t, 3>, 256> stencilPictureColours(

@@ -22,7 +22,7 @@ inline constexpr WindowKey kWindowKeys[] = {
     {"PgDn, PgUp", "next, previous lesson (in the course lessons/run opens)"},
     {"F1", "hide or show the panel"},
     {"+, -", "larger, smaller UI scale (text, widgets, stencil legend)"},
-    {"F2", "print the frame rate"},
+    {"F2", "print the frame rate and the lesson's time"},
     {"Esc", "quit (while a typed slider value is edited: end the edit)"},
 };
 

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <string>
 
 #include "gl/errors.h"
@@ -61,8 +62,12 @@ struct WindowState {
   // $STENCIL_FRAME_LOG: every frame's end on the window's clock, one a line, flushed at F2, so a
   // test can count frames over wall time itself (tests/window/frame_rate.sh).
   std::unique_ptr<std::ofstream> frameLog = {};
-  float optionsHeight = 0, bottomHeight = 0;
-  int layoutFrames = 0;  // frames drawn since the layout changed  // the panel's last layout: the options, the controls below
+  // The panel's last layout: the options' height, and that of the controls below them other than the
+  // views and what the two sections hold (measured; 0 before the first frame).
+  float optionsHeight = 0, fixedBelow = 0;
+  bool keysOpen = true, statsOpen = true;  // the two sections as the last frame showed them
+  bool compact = false;                    // the last frame's panel gave the options all it could
+  int layoutFrames = 0;                    // frames drawn since the layout changed
 };
 
 // The panel's width in screen pixels at a UI scale.
@@ -125,6 +130,12 @@ const char* viewName(View v) {
                                   : "depth";
 }
 
+// What a change says, the same line whether a key or a click on the panel made it.
+void sayView(WindowState& st) {
+  say(st, std::string("view: ") + viewName(st.view));
+  st.sayDepthRange = st.view == View::Depth;
+}
+
 // Closes this lesson's window to open the course's lesson at `index` in its place (Session::nextLesson).
 void goToLesson(GLFWwindow* w, WindowState& st, int index) {
   if (st.lessonIndex < 0 || index == st.lessonIndex) return;
@@ -169,6 +180,15 @@ std::string valueName(const Option& o, int value) {
 std::string optionLine(const Option& o) {
   const std::string name = valueName(o, o.value);
   return o.name + " = " + std::to_string(o.value) + (name.empty() ? std::string() : " (" + name + ")");
+}
+
+// An option changed (its key, or a click on its control): its line, and what it makes the lesson
+// count (lesson 14's oracle, say) after the next frame.
+void optionChanged(WindowState& st, const Option& o) {
+  say(st, optionLine(o));
+  st.countsBefore.clear();
+  for (const auto& [name, n] : st.session.recorder->counts()) st.countsBefore.push_back(name);
+  st.sayCountsAfter = 1;
 }
 
 void setUiScale(WindowState& st, float scale) {
@@ -237,8 +257,7 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
       return;
     case GLFW_KEY_TAB:
       st.view = static_cast<View>((static_cast<int>(st.view) + 1) % kViews);
-      say(st, std::string("view: ") + viewName(st.view));
-      st.sayDepthRange = st.view == View::Depth;
+      sayView(st);
       return;
     case GLFW_KEY_P:
       st.passStep = (mods & GLFW_MOD_SHIFT) ? (st.passStep < 0 ? passCount - 1 : st.passStep - 1)
@@ -257,13 +276,16 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
       say(st, "camera reset");
       return;
     case GLFW_KEY_F2: {
-      // The panel's figure, with the frames counted since the window opened and the clock, so a
-      // test can set it against frames over wall time.
-      char line[160];
-      std::snprintf(line, sizeof line, "frame rate: %.2f fps, %.2f ms a frame (%zu frames in the last %.2f s); frame %lld at %.6f s",
+      // The panel's figure, with the frames counted since the window opened and the window's clock,
+      // so a test can set it against frames over wall time; then the lesson's time, the panel's t.
+      char line[256];
+      std::snprintf(line, sizeof line,
+                    "frame rate: %.2f fps, %.2f ms a frame (%zu frames in the last %.2f s); frame %lld at %.6f s on "
+                    "the window's clock; the lesson's t = %.3f s%s",
                     st.rate.fps(), st.rate.msPerFrame(), st.rate.intervals(),
                     st.rate.fps() > 0 ? static_cast<double>(st.rate.intervals()) / st.rate.fps() : 0.0,
-                    st.rate.frames(), glfwGetTime());
+                    st.rate.frames(), glfwGetTime(), st.time,
+                    st.paused ? ", paused" : st.passStep >= 0 ? ", held" : "");
       if (st.frameLog) st.frameLog->flush();
       say(st, line);
       return;
@@ -284,11 +306,7 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
   for (Option& o : s.options)
     if (std::toupper(static_cast<unsigned char>(o.key)) == key) {
       o.value = o.value >= o.max ? o.min : o.value + 1;
-      say(st, optionLine(o));
-      // What the option makes the lesson count (lesson 14's oracle, say) is said after the next frame.
-      st.countsBefore.clear();
-      for (const auto& [name, n] : s.recorder->counts()) st.countsBefore.push_back(name);
-      st.sayCountsAfter = 1;
+      optionChanged(st, o);
     }
 }
 
@@ -360,23 +378,27 @@ struct PanelFit {
   float contentBottom = 0, height = 0;  // screen pixels: the last widget's bottom, the panel's height
   std::vector<std::string> cut;         // labels or choices drawn narrower than their text
   float optionsShown = 0, optionsWanted = 0;  // the options' scrolling area and what they need
+  bool keysListed = false;                    // the keys' section open
 };
 
-// A combo box the panel's full width, its choice shown after `label` ("variant [V]: ops"), after its
-// key alone, or alone where neither fits, its list as wide as its widest choice: no name is cut.
-template <typename Names, typename Pick>
-void fullWidthCombo(const char* id, const std::string& label, const std::string& current, const Names& names,
-                    const std::string& chosen, Pick pick, PanelFit& fit) {
+// A combo box the panel's full width, its choice shown after `label` ("variant [V]: ops"), else
+// after its keys' `hint` alone ("[PgUp/Dn] 08-shadow-volumes-counting"), else alone with the label
+// on a line of its own above it: the keys' hint is never dropped. Its list is as wide as its widest
+// choice: no name is cut. Returns the choice picked this frame, if any.
+template <typename Names>
+std::optional<std::string> fullWidthCombo(const char* id, const std::string& label, const std::string& hint,
+                                          const std::string& current, const Names& names, PanelFit& fit) {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float arrow = ImGui::GetFrameHeight(), width = ImGui::GetContentRegionAvail().x;
   const auto fits = [&](const std::string& text) {
     return ImGui::CalcTextSize(text.c_str()).x + style.FramePadding.x * 2 + arrow <= width;
   };
-  // The label and its key where they fit, else the key and the choice ("[PgUp PgDn] 16-fast-...",
-  // "[V] keyhole"), else the choice alone (the keys' hint names the key).
   std::string preview = label + ": " + current;
-  if (!fits(preview) && label.find('[') != std::string::npos) preview = label.substr(label.find('[')) + " " + current;
-  if (!fits(preview)) preview = current;
+  if (!fits(preview)) preview = hint + " " + current;
+  if (!fits(preview)) {
+    ImGui::TextUnformatted(label.c_str());
+    preview = current;
+  }
   if (!fits(preview)) fit.cut.push_back(preview);
   float widest = 0;
   for (const std::string& n : names) widest = std::max(widest, ImGui::CalcTextSize(n.c_str()).x);
@@ -384,15 +406,75 @@ void fullWidthCombo(const char* id, const std::string& label, const std::string&
       ImVec2(std::max(width, widest + style.WindowPadding.x * 2 + style.ScrollbarSize), 0),
       ImVec2(1e6f, ImGui::GetTextLineHeightWithSpacing() * 20 + style.WindowPadding.y * 2));
   ImGui::SetNextItemWidth(width);
+  std::optional<std::string> picked;
   if (ImGui::BeginCombo(id, preview.c_str())) {
     for (const std::string& n : names)
-      if (ImGui::Selectable(n.c_str(), n == chosen)) pick(n);
+      if (ImGui::Selectable(n.c_str(), n == current)) picked = n;
     ImGui::EndCombo();
   }
+  return picked;
 }
 
-// Lays the panel out to fit the window: two-state options side by side where they fit, the keys'
-// hints in full where there is room and in one line where there is not. Returns what it measured.
+// An integer slider `width` wide with `label` beside it, its text beside its grab rather than over
+// it: in the wider of the two parts of the frame the grab leaves, `text` where it fits there, else
+// as much of it as fits with "...", else `shortText` (else that, clipped, and said as cut). While a typed edit is open (ctrl+click) ImGui
+// draws the field. Returns whether the value changed; `hovered` says whether the pointer is on it.
+bool sliderBesideGrab(const std::string& label, int* value, int min, int max, const std::string& text,
+                      const std::string& shortText, float width, bool& hovered, PanelFit& fit) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const std::string id = "##" + label;
+  const bool typing = ImGui::TempInputIsActive(ImGui::GetID(id.c_str()));
+  // ImGui's own text (the number) drawn invisible: it would sit centred, over the grab.
+  if (!typing) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0, 0, 0, 0));
+  ImGui::SetNextItemWidth(width);
+  const bool changed = ImGui::SliderInt(id.c_str(), value, min, max, "%d");
+  if (!typing) ImGui::PopStyleColor();
+  hovered = ImGui::IsItemHovered();
+  if (!typing) {
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    // The grab as ImGui 1.86 places it (SliderBehaviorT): 2 px in from the frame, an integer
+    // slider's grab 1 / (range + 1) of the frame wide, at least GrabMinSize.
+    const float padding = 2.0f, track = b.x - a.x - 2 * padding;
+    const int range = std::max(max - min, 0);
+    const float grab = std::min(std::max(track / static_cast<float>(range + 1), style.GrabMinSize), track);
+    const float t = range > 0 ? static_cast<float>(std::clamp(*value, min, max) - min) / static_cast<float>(range) : 0.0f;
+    const float grabLeft = a.x + padding + t * (track - grab), grabRight = grabLeft + grab;
+    const float leftFrom = a.x + style.FramePadding.x, leftTo = grabLeft - style.FramePadding.x;
+    const float rightFrom = grabRight + style.FramePadding.x, rightTo = b.x - style.FramePadding.x;
+    const bool right = rightTo - rightFrom >= leftTo - leftFrom;
+    const float from = right ? rightFrom : leftFrom, to = right ? rightTo : leftTo;
+    // Else the longest start of `text` that fits with "..." (the number first: "8: shadows (li..."),
+    // else the short text.
+    std::string shown = text;
+    if (ImGui::CalcTextSize(shown.c_str()).x > to - from) {
+      shown = shortText;
+      for (std::size_t n = text.size(); n-- > shortText.size();)
+        if (const std::string start = text.substr(0, n) + "..."; ImGui::CalcTextSize(start.c_str()).x <= to - from) {
+          shown = start;
+          break;
+        }
+    }
+    const float w = ImGui::CalcTextSize(shown.c_str()).x;
+    if (w > to - from) fit.cut.push_back(label + " " + shown);
+    const float x = w > to - from ? from : from + (to - from - w) / 2;
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->PushClipRect(ImVec2(from, a.y), ImVec2(std::max(from, to), b.y), true);
+    draw->AddText(ImVec2(x, a.y + style.FramePadding.y), ImGui::GetColorU32(ImGuiCol_Text), shown.c_str());
+    draw->PopClipRect();
+  }
+  ImGui::SameLine(0, style.ItemInnerSpacing.x);
+  ImGui::TextUnformatted(label.c_str());
+  hovered = hovered || ImGui::IsItemHovered();
+  return changed;
+}
+
+// Lays the panel out to fit the window. The options take the room the controls below them leave
+// and scroll within it where they need more; below them the views, the pass stepper, pause and the
+// frame rate always show. What else there is folds to give the options the room they want: the
+// views as a list in one row instead of radio buttons, then the keys, then the draw calls and the
+// lesson's counts (each a section under a header, open where there is room; a click opens or folds
+// it until the layout next changes). Two-state options sit side by side where they fit. Returns
+// what it measured.
 PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
   Session& s = st.session;
   PanelFit fit;
@@ -400,10 +482,11 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
   ImGui::SetNextWindowPos(ImVec2(0, 0));
   ImGui::SetNextWindowSize(ImVec2(static_cast<float>(panelWidth(st.uiScale)), height));
   // No keyboard navigation in the panel: Tab is the lesson's (the view), never a jump into a
-  // slider's text field that would keep the keys from then on.
-  ImGui::Begin(s.info.id.c_str(), nullptr,
+  // slider's text field that would keep the keys from then on. The lesson's title in the title bar,
+  // which a compact panel leaves out (the lesson list names the lesson).
+  ImGui::Begin((s.info.title + "###panel").c_str(), nullptr,
                ImGuiWindowFlags_NoNavInputs | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                   ImGuiWindowFlags_NoCollapse);
+                   ImGuiWindowFlags_NoCollapse | (st.compact ? ImGuiWindowFlags_NoTitleBar : 0));
   ImGui::PushAllowKeyboardFocus(false);
   const ImGuiStyle& style = ImGui::GetStyle();
   const float full = ImGui::GetContentRegionAvail().x;
@@ -420,37 +503,61 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
     if (ImGui::GetItemRectMax().x > rightEdge() + 0.5f) fit.cut.push_back(text);
   };
 
-  ImGui::TextWrapped("%s", s.info.title.c_str());
   if (st.lessonIndex >= 0) {
     std::vector<std::string> names;
     for (const auto& l : st.course) names.push_back(l.filename().string());
     const std::string current = names[static_cast<std::size_t>(st.lessonIndex)];
-    fullWidthCombo("##lesson", "lesson [PgUp PgDn]", current, names, current,
-                   [&](const std::string& n) {
-                     goToLesson(window, st,
-                                static_cast<int>(std::find(names.begin(), names.end(), n) - names.begin()));
-                   },
-                   fit);
+    if (const auto n = fullWidthCombo("##lesson", "lesson [PgUp PgDn]", "[PgUp/Dn]", current, names, fit))
+      goToLesson(window, st, static_cast<int>(std::find(names.begin(), names.end(), *n) - names.begin()));
   }
   std::vector<std::string> variants;
   for (const Variant& v : s.info.variants) variants.push_back(v.name);
-  fullWidthCombo("##variant", "variant [V]", s.variant, variants, s.variant,
-                 [&](const std::string& n) { switchVariant(s, n); }, fit);
-  // The options take the room the controls below leave them, and scroll within it where they
-  // need more: the views, the pass stepper and the frame rate stay in the window. The heights are
-  // the last frame's (the first frame's guess is corrected by the second).
-  const std::string keys = std::string("drag: orbit  wheel: zoom  R: reset  S: screenshot (shift: with the panel)  "
-                                       "PgDn PgUp: next, previous lesson  F1: hide the panel  + -: UI scale  "
-                                       "F2: say the frame rate  Esc: quit") +
-                           (s.info.brush ? "  right drag: the lesson's brush" : "");
-  const float keysExtra = ImGui::CalcTextSize(keys.c_str(), nullptr, false, full).y - ImGui::GetTextLineHeight();
+  if (const auto n = fullWidthCombo("##variant", "variant [V]", "[V]", s.variant, variants, fit);
+      n && *n != s.variant) {
+    switchVariant(s, *n);
+    say(st, "variant: " + s.variant);
+  }
+
+  // What the controls below the options need (the heights of rows, a wrapped text and the views'
+  // radio buttons computed; the rest measured in the last frame, the first frame's guess corrected
+  // by the second), and what folds where the options want the room.
+  const std::string keys = std::string("drag: orbit, wheel: zoom, R: reset, S: screenshot (shift: with the panel), "
+                                       "PgDn PgUp: next, previous lesson, F1: hide the panel, + -: UI scale, "
+                                       "F2: say the frame rate and time, Esc: quit") +
+                           (s.info.brush ? ", right drag: the lesson's brush" : "");
+  const float row = ImGui::GetFrameHeightWithSpacing(), line = ImGui::GetTextLineHeightWithSpacing();
+  const float keysBody = ImGui::CalcTextSize(keys.c_str(), nullptr, false, full).y + style.ItemSpacing.y;
+  const float statsBody = line * static_cast<float>(1 + s.recorder->counts().size());
+  float radioRows = 1;
+  float x = ImGui::CalcTextSize("view [Tab]").x;
+  for (int v = 0; v < kViews; ++v) {
+    const float w = ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(kViewNames[v]).x;
+    if (x + style.ItemSpacing.x + w <= full)
+      x += style.ItemSpacing.x + w;
+    else
+      x = w, radioRows += 1;
+  }
   const float room = height - style.WindowPadding.y - ImGui::GetCursorPosY();
-  const float below = st.bottomHeight > 0 ? st.bottomHeight : 12 * ImGui::GetFrameHeightWithSpacing();
-  const float wanted = st.optionsHeight > 0 ? st.optionsHeight : 1e6f;
-  const bool fullKeys = wanted + below + keysExtra <= room;
+  const float fixed = st.fixedBelow > 0 ? st.fixedBelow : 4 * row;
+  const float wanted = st.optionsHeight > 0 ? st.optionsHeight : (s.options.empty() ? 0.0f : 1e6f);
+  // Full (the title bar, the radio buttons, separators) where the options then have the room they
+  // want, else compact: decided on the room with the title bar, so the choice does not flip.
+  const float separator = style.ItemSpacing.y;  // a separator's height in the layout
+  const float titled = room - (st.compact ? ImGui::GetFrameHeight() : 0.0f);
+  if (st.optionsHeight > 0 || s.options.empty())  // the first frame keeps the title bar: nothing measured yet
+    st.compact = wanted + fixed + 2 * separator + radioRows * row > titled;
+  const bool radios = !st.compact;
+  const float views = radios ? radioRows * row + 2 * separator : row;
+  // The sections open or fold when the layout changes (F1, a resize, the UI scale); in between a
+  // click on a header decides.
+  const bool relayout = st.sayLayout;
+  if (relayout) {
+    st.keysOpen = wanted + fixed + views + keysBody <= room;
+    st.statsOpen = wanted + fixed + views + (st.keysOpen ? keysBody : 0.0f) + statsBody <= room;
+  }
   if (!s.options.empty()) {
-    const float shown = std::max(std::min(wanted, room - below - (fullKeys ? keysExtra : 0.0f)),
-                                 2 * ImGui::GetFrameHeightWithSpacing());
+    const float open = (st.keysOpen ? keysBody : 0.0f) + (st.statsOpen ? statsBody : 0.0f);
+    const float shown = std::max(std::min(wanted, room - fixed - views - open), 2 * row);
     fit.optionsShown = shown, fit.optionsWanted = wanted;
     ImGui::BeginChild("##options", ImVec2(0, shown), false, ImGuiWindowFlags_NoNavInputs);
     const float inner = ImGui::GetContentRegionAvail().x, panelEdge = edge;
@@ -459,30 +566,29 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
     bool sameRow = false;  // the last widget was a checkbox that may take one beside it
     for (Option& o : s.options) {
       const std::string text = label(o);
+      bool hovered = false;
       if (o.min == 0 && o.max == 1) {
         const float w = ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(text.c_str()).x;
         if (sameRow && ImGui::GetItemRectMax().x + style.ItemSpacing.x + w <= rightEdge())
           ImGui::SameLine();
         bool on = o.value != 0;
-        if (ImGui::Checkbox(text.c_str(), &on)) o.value = on ? 1 : 0;
+        if (ImGui::Checkbox(text.c_str(), &on)) {
+          o.value = on ? 1 : 0;
+          optionChanged(st, o);
+        }
+        hovered = ImGui::IsItemHovered();
         sameRow = true;
       } else {
-        // The value's name where it fits in the slider (else the number alone; R's line and the
-        // tooltip give the name).
-        const std::string name = valueName(o, o.value);
-        std::string format = "%d";
-        if (!name.empty() && ImGui::CalcTextSize((std::to_string(o.value) + ": " + name).c_str()).x +
-                                     2 * style.FramePadding.x <=
-                                 sliderWidth) {
-          format = "%d: ";
-          for (const char c : name) format += c == '%' ? std::string("%%") : std::string(1, c);
-        }
-        ImGui::SetNextItemWidth(sliderWidth);
-        ImGui::SliderInt(text.c_str(), &o.value, o.min, o.max, format.c_str());
+        // The value's name where it fits beside the grab, else the number alone (the line it says
+        // and the tooltip give the name).
+        const std::string name = valueName(o, o.value), number = std::to_string(o.value);
+        if (sliderBesideGrab(text, &o.value, o.min, o.max, name.empty() ? number : number + ": " + name, number,
+                             sliderWidth, hovered, fit))
+          optionChanged(st, o);
         sameRow = false;
       }
       checkCut(text);
-      if (ImGui::IsItemHovered()) {  // wrapped to the window's width: a long help stays on screen
+      if (hovered) {  // wrapped to the window's width: a long help stays on screen
         ImGui::BeginTooltip();
         ImGui::PushTextWrapPos(std::max(ImGui::GetFontSize() * 10.0f,
                                         ImGui::GetIO().DisplaySize.x - ImGui::GetIO().MousePos.x - ImGui::GetFontSize() * 2.0f));
@@ -497,48 +603,78 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
   }
   const float bottomStart = ImGui::GetCursorPosY();
 
-  ImGui::Separator();
-  ImGui::AlignTextToFramePadding();  // on the radio buttons' line
-  ImGui::TextUnformatted("view [Tab]");
-  int view = static_cast<int>(st.view);
-  for (int v = 0; v < kViews; ++v) {
-    const float w = ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(kViewNames[v]).x;
-    if (ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x + style.ItemSpacing.x + w <= style.WindowPadding.x + full)
-      ImGui::SameLine();
-    ImGui::RadioButton(kViewNames[v], &view, v);
+  float separators = 0;  // their height, measured: the fixed part below does not count them
+  const auto separate = [&] {
+    if (st.compact) return;
+    const float top = ImGui::GetCursorPosY();
+    ImGui::Separator();
+    separators += ImGui::GetCursorPosY() - top;
+  };
+  separate();
+  const float viewsStart = ImGui::GetCursorPosY();
+  const View viewBefore = st.view;
+  if (radios) {
+    ImGui::AlignTextToFramePadding();  // on the radio buttons' line
+    ImGui::TextUnformatted("view [Tab]");
+    int view = static_cast<int>(st.view);
+    for (int v = 0; v < kViews; ++v) {
+      const float w = ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(kViewNames[v]).x;
+      if (ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x + style.ItemSpacing.x + w <= style.WindowPadding.x + full)
+        ImGui::SameLine();
+      ImGui::RadioButton(kViewNames[v], &view, v);
+    }
+    st.view = static_cast<View>(view);
+  } else {
+    const std::vector<std::string> names(std::begin(kViewNames), std::end(kViewNames));
+    if (const auto n = fullWidthCombo("##view", "view [Tab]", "[Tab]", kViewNames[static_cast<int>(st.view)], names, fit))
+      st.view = static_cast<View>(std::find(names.begin(), names.end(), *n) - names.begin());
   }
-  st.view = static_cast<View>(view);
+  if (st.view != viewBefore) sayView(st);
+  const float viewsEnd = ImGui::GetCursorPosY();
   const std::string passName = stepName(s, st.passStep);
-  ImGui::SetNextItemWidth(stepperWidth);
-  ImGui::SliderInt("after pass [P]", &st.passStep, -1, passesRun(s) - 1, passName.c_str());
+  bool hovered = false;
+  const std::string stepNumber = std::to_string(st.passStep + 1);
+  if (sliderBesideGrab("after pass [P]", &st.passStep, -1, passesRun(s) - 1,
+                       st.passStep < 0 ? passName : stepNumber + ": " + passName,
+                       st.passStep < 0 ? "finished" : stepNumber, stepperWidth, hovered, fit))
+    sayStep(st);
+  if (hovered) ImGui::SetTooltip("%s", passName.c_str());  // the name the slider may have shortened
   checkCut("after pass [P]");
-  ImGui::Checkbox("pause [Space]", &st.paused);
+  if (ImGui::Checkbox("pause [Space]", &st.paused)) say(st, st.paused ? "paused" : "running");
   ImGui::SameLine();
   ImGui::Text(st.passStep >= 0 ? "t = %.2f s, held" : "t = %.2f s", st.time);
-  ImGui::Separator();
+  separate();
   // Frames in the last second, not a smoothed 1/dt: right within a second of any change of rate.
-  ImGui::Text("%.1f fps, %.1f ms a frame", st.rate.fps(), st.rate.msPerFrame());
-  std::uint64_t draws = 0, triangles = 0;
-  for (const PassStats& p : s.recorder->passStats()) draws += p.drawCalls, triangles += p.triangles;
-  ImGui::Text("%llu draw calls, %llu triangles", static_cast<unsigned long long>(draws),
-              static_cast<unsigned long long>(triangles));
-  // The lesson's own counts (Frame::count): what an option such as lesson 14's oracle found.
-  if (!s.recorder->counts().empty()) {
-    // Opened when an option brought counts of its own (lesson 14's K), not on every option change.
-    bool newCounts = false;
+  // Under it the draw calls and the lesson's own counts (Frame::count: what an option such as
+  // lesson 14's oracle found), opened when an option brought counts of its own (lesson 14's K).
+  bool newCounts = false;
+  for (const auto& [name, n] : s.recorder->counts())
+    newCounts = newCounts || std::find(st.countsBefore.begin(), st.countsBefore.end(), name) == st.countsBefore.end();
+  if (st.sayCountsAfter == 0 && newCounts) st.statsOpen = true;
+  char rate[96];
+  std::snprintf(rate, sizeof rate, "%.1f fps, %.1f ms a frame###stats", st.rate.fps(), st.rate.msPerFrame());
+  ImGui::SetNextItemOpen(st.statsOpen);
+  float bodies = 0;
+  st.statsOpen = ImGui::CollapsingHeader(rate);
+  if (st.statsOpen) {
+    const float top = ImGui::GetCursorPosY();
+    std::uint64_t draws = 0, triangles = 0;
+    for (const PassStats& p : s.recorder->passStats()) draws += p.drawCalls, triangles += p.triangles;
+    ImGui::Text("%llu draw calls, %llu triangles", static_cast<unsigned long long>(draws),
+                static_cast<unsigned long long>(triangles));
     for (const auto& [name, n] : s.recorder->counts())
-      newCounts = newCounts || std::find(st.countsBefore.begin(), st.countsBefore.end(), name) == st.countsBefore.end();
-    if (st.sayCountsAfter == 0 && newCounts) ImGui::SetNextItemOpen(true);
-    if (ImGui::CollapsingHeader("the lesson's counts"))
-      for (const auto& [name, n] : s.recorder->counts())
-        ImGui::TextWrapped("%s %llu", name.c_str(), static_cast<unsigned long long>(n));
+      ImGui::TextWrapped("%s %llu", name.c_str(), static_cast<unsigned long long>(n));
+    bodies += ImGui::GetCursorPosY() - top;
   }
-  // The keys in full where they fit, else one line.
-  if (fullKeys)
+  ImGui::SetNextItemOpen(st.keysOpen);
+  st.keysOpen = ImGui::CollapsingHeader("keys");
+  if (st.keysOpen) {
+    const float top = ImGui::GetCursorPosY();
     ImGui::TextWrapped("%s", keys.c_str());
-  else
-    ImGui::TextUnformatted(s.info.brush ? "keys: --help; right drag: brush" : "keys: --help lists them");
-  st.bottomHeight = ImGui::GetCursorPosY() - bottomStart - (fullKeys ? keysExtra : 0.0f);
+    bodies += ImGui::GetCursorPosY() - top;
+  }
+  fit.keysListed = st.keysOpen;
+  st.fixedBelow = ImGui::GetCursorPosY() - bottomStart - bodies - (viewsEnd - viewsStart) - separators;
   fit.contentBottom = ImGui::GetCursorPosY() - style.ItemSpacing.y + style.WindowPadding.y;
   ImGui::PopAllowKeyboardFocus();
   ImGui::End();
@@ -602,7 +738,7 @@ Image stencilViewPicture(View view, const Image& stencil, float uiScale) {
 }
 
 // A window larger than the screen's work area (--size 1280x720 and the panel on a 1280x720
-// projector) is shrunk to fit it, the picture keeping its aspect ratio, and moved onto it; one
+// projector) is shrunk to fit it, using its whole height and width, and moved onto it; one
 // that fits but lies past its edge (--position) is moved onto it; one line says so. A --frames
 // run (a test against a golden) keeps its size.
 void fitToScreen(GLFWwindow* w, WindowState& st) {
@@ -621,16 +757,18 @@ void fitToScreen(GLFWwindow* w, WindowState& st) {
                 std::to_string(onX) + "," + std::to_string(onY) + ", not " + std::to_string(x) + "," + std::to_string(y));
     return;
   }
+  // Each side shrunk to the room the screen has: the picture may take another shape (a 16:9
+  // picture beside the panel on a 16:9 screen), but no screen height is left unused.
   const int panel = st.panel ? std::min(panelWidth(st.uiScale), aw / 2) : 0;
   const int pictureW = std::max(1, ww - panel), pictureH = std::max(1, wh);
-  const double k = std::min(static_cast<double>(aw - panel) / pictureW, static_cast<double>(ah) / pictureH);
-  const int fitW = std::max(1, static_cast<int>(pictureW * k)), fitH = std::max(1, static_cast<int>(pictureH * k));
+  const int fitW = std::clamp(aw - panel, 1, pictureW), fitH = std::clamp(ah, 1, pictureH);
   glfwSetWindowSize(w, fitW + panel, fitH);
   glfwGetWindowPos(w, &x, &y);
   glfwSetWindowPos(w, std::clamp(x, ax, ax + aw - (fitW + panel)), std::clamp(y, ay, ay + ah - fitH));
+  const bool reshaped = static_cast<long long>(fitW) * pictureH != static_cast<long long>(fitH) * pictureW;
   say(st, "the window fits the screen's " + std::to_string(aw) + "x" + std::to_string(ah) + ": the picture is " +
               std::to_string(fitW) + "x" + std::to_string(fitH) + ", not " + std::to_string(pictureW) + "x" +
-              std::to_string(pictureH));
+              std::to_string(pictureH) + (reshaped ? " (its aspect ratio changed to use the screen's room)" : ""));
 }
 
 }  // namespace
@@ -814,8 +952,9 @@ int runWindow(Session& s) {
         saveScreenshot(st, readColourPixels(0, w, h));
         st.windowScreenshot = false;
       }
-      // Said a frame after the change: the panel's layout uses the heights its last frame measured.
-      if (st.sayLayout && ++st.layoutFrames >= 2) {
+      // Said two frames after the change: the panel's layout uses the heights its last frame
+      // measured, and whether it is compact (no title bar) the frame before.
+      if (st.sayLayout && ++st.layoutFrames >= 3) {
         st.layoutFrames = 0;
         // One line for what changed the layout (F1, a resize, the UI scale): the picture's size,
         // and whether the panel's widgets fit its height and width.
@@ -839,6 +978,7 @@ int runWindow(Session& s) {
           if (fit.optionsShown + 0.5f < fit.optionsWanted)
             line += "; the options scroll (" + std::to_string(static_cast<int>(fit.optionsShown)) + " of " +
                     std::to_string(static_cast<int>(fit.optionsWanted)) + " px shown)";
+          line += fit.keysListed ? "; the keys listed" : "; the keys folded";
           for (const std::string& c : fit.cut) line += "; cut: " + c;
         }
         say(st, line);

@@ -140,9 +140,13 @@ void FastRobustShadows::render(Frame& f) {
   // ---- per light: its shadow in the stencil, then its light where the stencil is 0 ----------
   const Frustum frustum = viewFrustum(viewProjection, false);
   const std::array<glm::vec3, 4> nearRect = nearRectangle(viewProjection);
-  for (int index : lightOrder(f)) {  // the chosen light last: the frame ends with its stencil
+  const std::vector<int> order = lightOrder(f);
+  for (int index : order) {  // the chosen light last: the frame ends with its stencil
     const SceneLight& light = scene_.lights[static_cast<std::size_t>(index)];
-    const std::string which = "light " + std::to_string(index);  // the passes say whose they are
+    // The passes say whose they are, numbered as the light option [L] numbers them; the chosen
+    // light, drawn last, says so (the stepper shows 1, 2, 3, then 0 where L is 0).
+    const std::string which =
+        "light " + std::to_string(index) + (index == order.back() ? ", chosen [L]" : "");
     for (Caster& c : casters_) c.volume = {};
     // 6. The light's bounds: its sphere's rectangle on screen and the depths it spans.
     const LightClip clip =

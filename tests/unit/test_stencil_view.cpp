@@ -64,6 +64,25 @@ TEST(StencilView, EveryPresentValueIsDistinctFromEveryOther) {
     EXPECT_EQ(colours[static_cast<std::size_t>(v)], stencilColour(static_cast<std::uint8_t>(v))) << v;
 }
 
+// A count wrapped below zero fills a picture with 21 values, 235..255: on a projector the pairs
+// the classroom trials could not tell apart at 25 (246 and 251, 237 and 243, 249 and 252), and
+// every other pair, are 35 apart, the distance that read apart there.
+TEST(StencilView, WrappedCountsReadApartOnAProjector) {
+  constexpr float kProjector = 35.0f;
+  EXPECT_GE(kStencilDistinct, kProjector);
+  std::vector<std::uint64_t> histogram(256, 0);
+  for (int v = 235; v <= 255; ++v) histogram[static_cast<std::size_t>(v)] = 100 + static_cast<std::uint64_t>(v * 37 % 200);
+  const auto colours = stencilPictureColours(histogram);
+  const auto apart = [&](int a, int b) {
+    return colourDistance(colours[static_cast<std::size_t>(a)], colours[static_cast<std::size_t>(b)]);
+  };
+  EXPECT_GE(apart(246, 251), kProjector);
+  EXPECT_GE(apart(237, 243), kProjector);
+  EXPECT_GE(apart(249, 252), kProjector);
+  for (int a = 235; a <= 255; ++a)
+    for (int b = a + 1; b <= 255; ++b) EXPECT_GE(apart(a, b), kProjector) << a << " and " << b;
+}
+
 // The legend gives each value's pixel count, and a value a few pixels hold is ringed in its colour.
 TEST(StencilView, RareValuesAreRingedAndCounted) {
   Image s(40, 30, 1);
