@@ -102,9 +102,9 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
     } else if (flag == "--size") {
       const std::string s = value();
       const auto x = s.find('x');
-      if (x == std::string::npos || s.find_first_not_of("0123456789", 0) != x ||
+      if (x == std::string::npos || x == 0 || x + 1 == s.size() || s.find_first_not_of("0123456789", 0) != x ||
           s.find_first_not_of("0123456789", x + 1) != std::string::npos)
-        throw UsageError("--size expects WxH, got '" + s + "'");
+        throw UsageError("--size expects WxH, two whole numbers (e.g. 640x480), got '" + s + "'");
       cl.width = parseNumber<int>("--size", s.substr(0, x));
       cl.height = parseNumber<int>("--size", s.substr(x + 1));
       if (cl.width < 1 || cl.height < 1 || cl.width > 8192 || cl.height > 8192)
@@ -206,7 +206,10 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
     } else if (flag == "--position") {
       const std::string s = value();
       const auto comma = s.find(',');
-      if (comma == std::string::npos) throw UsageError("--position expects X,Y, got '" + s + "'");
+      if (comma == std::string::npos || comma == 0 || comma + 1 == s.size() ||
+          s.find_first_not_of("-0123456789", 0) != comma ||
+          s.find_first_not_of("-0123456789", comma + 1) != std::string::npos)
+        throw UsageError("--position expects X,Y, two whole numbers (e.g. 100,50), got '" + s + "'");
       const int x = parseNumber<int>(flag, s.substr(0, comma)), y = parseNumber<int>(flag, s.substr(comma + 1));
       if (std::abs(x) > 65536 || std::abs(y) > 65536)
         throw UsageError("--position must be within -65536..65536 each way, got '" + s + "'");
