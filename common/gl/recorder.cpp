@@ -50,7 +50,7 @@ PassRecorder::PassRecorder(std::vector<std::string> declaredPasses, const Frameb
       framebuffer_(framebuffer),
       pipelineStatistics_(features.pipelineStatistics) {
   GLint bits = 0;
-  glGetQueryiv(GL_TIME_ELAPSED, GL_QUERY_COUNTER_BITS, &bits);
+  if (features.timerQuery) glGetQueryiv(GL_TIME_ELAPSED, GL_QUERY_COUNTER_BITS, &bits);
   timerCounts_ = bits > 0;
   // Mesa binds a framebuffer in the driver only at the first clear or draw into it. A timer query
   // begun before the driver has any framebuffer is binned into no tile, so it never records its

@@ -1,0 +1,188 @@
+// A lesson page's script: the URL's state becomes the lesson's command line, the lesson's program
+// (NN-name.js, built by Emscripten from the lesson's C++) runs on the canvas, and the controls are
+// made from the lesson's own declarations (LessonInfo), which the program hands over when ready.
+//
+// The URL: ?variant=V&time=T&size=WxH&set=NAME:VALUE,NAME:VALUE&paused=1
+// The snapshot contract (the tests'): with &snapshot=1 the frame at that time and size is drawn,
+// then <img id="snapshot-colour"> and <img id="snapshot-stencil"> (PNG data URLs; the stencil one
+// grey byte a pixel, as --stencil-out's .raw.png) are added to the page and document.title is
+// "snapshot-ready", or "snapshot-error: MESSAGE" when the frame cannot be drawn.
+'use strict';
+
+const lessonId = document.body.dataset.lesson;
+const params = new URLSearchParams(location.search);
+const snapshot = params.get('snapshot') === '1';
+const statusLine = document.getElementById('status');
+const logBox = document.getElementById('log');
+let lesson = null;  // the lesson's declarations, once its program is ready
+let failed = false;
+
+function log(text) {
+  console.log(text);
+  logBox.textContent += text + '\n';
+}
+
+// The lesson's command line from the URL; what is not a setting of the URL is left out.
+function commandLine() {
+  const args = [];
+  if (params.has('variant')) args.push('--variant', params.get('variant'));
+  if (params.has('time')) args.push('--time', params.get('time'));
+  if (params.has('size')) args.push('--size', params.get('size'));
+  if (params.has('set'))
+    for (const setting of params.get('set').split(',').filter(s => s))
+      args.push('--set', setting.replace(':', '='));
+  return args;
+}
+
+// Keeps the URL the state the page shows, so that a link restores it.
+function updateUrl(changes) {
+  for (const [key, value] of Object.entries(changes)) {
+    if (value === null || value === undefined || value === '') params.delete(key);
+    else params.set(key, value);
+  }
+  history.replaceState(null, '', '?' + params.toString());
+}
+
+function base64(bytes) {
+  let text = '';
+  for (let i = 0; i < bytes.length; i += 0x8000)
+    text += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
+  return btoa(text);
+}
+
+// Called by the lesson's program (common/gl/web_run.cpp).
+window.StencilPage = {
+  error(message) {
+    failed = true;
+    statusLine.textContent = message;
+    statusLine.className = 'error';
+    log('error: ' + message);
+    if (snapshot) document.title = 'snapshot-error: ' + message;
+  },
+  image(id, bytes) {
+    const img = document.createElement('img');
+    img.id = id;
+    img.alt = id;
+    img.src = 'data:image/png;base64,' + base64(bytes);
+    document.getElementById('live').appendChild(img);
+  },
+  ready(info) {
+    lesson = info;  // the program has logged its renderer and features
+    if (snapshot) return;
+    makeControls(info);
+  },
+  frame(time, passes) {
+    if (failed) return;
+    statusLine.className = '';
+    statusLine.textContent = 't = ' + time.toFixed(2) + ' s; passes: ' + passes.join(', ');
+    const timeBox = document.getElementById('time');
+    if (timeBox && document.activeElement !== timeBox) timeBox.value = time.toFixed(2);
+  },
+};
+
+function settingsOf(info) {
+  return info.options.map(o => o.name + ':' + o.value).join(',');
+}
+
+function makeControls(info) {
+  const box = document.getElementById('controls');
+  box.textContent = '';
+  const label = (text, element, title) => {
+    const l = document.createElement('label');
+    l.textContent = text;
+    if (title) l.title = title;
+    l.appendChild(element);
+    box.appendChild(l);
+    return element;
+  };
+  const variant = document.createElement('select');
+  variant.id = 'variant';
+  for (const v of info.variants) {
+    const option = document.createElement('option');
+    option.value = v.name;
+    option.textContent = v.name;
+    option.title = v.help;
+    option.selected = v.name === info.variant;
+    variant.appendChild(option);
+  }
+  variant.addEventListener('change', () => {
+    if (Module.ccall('stencil_web_variant', 'number', ['string'], [variant.value]) !== 0) return;
+    updateUrl({variant: variant.value, set: null});
+    failed = false;
+    reloadOptions(variant.value);
+  });
+  label('variant', variant, info.variants.find(v => v.name === info.variant)?.help);
+  for (const o of info.options) {
+    const input = document.createElement('input');
+    input.id = 'option-' + o.name;
+    if (o.min === 0 && o.max === 1) {
+      input.type = 'checkbox';
+      input.checked = o.value !== 0;
+    } else {
+      input.type = 'number';
+      input.min = o.min;
+      input.max = o.max;
+      input.value = o.value;
+    }
+    input.addEventListener('change', () => {
+      const value = input.type === 'checkbox' ? (input.checked ? 1 : 0) : Number(input.value);
+      if (Module.ccall('stencil_web_option', 'number', ['string', 'number'], [o.name, value]) !== 0) return;
+      o.value = value;
+      updateUrl({set: settingsOf(info)});
+    });
+    label(o.name, input, o.help);
+  }
+  const time = document.createElement('input');
+  time.id = 'time';
+  time.type = 'number';
+  time.step = '0.1';
+  time.value = info.time.toFixed(2);
+  time.addEventListener('change', () => {
+    Module._stencil_web_time(Number(time.value));
+    updateUrl({time: time.value});
+  });
+  label('time (s)', time);
+  const play = document.createElement('button');
+  play.id = 'play';
+  let playing = params.get('paused') !== '1';
+  const setPlaying = on => {
+    playing = on;
+    play.textContent = on ? 'pause' : 'play';
+    Module._stencil_web_play(on ? 1 : 0);
+    updateUrl({paused: on ? null : '1'});
+    if (!on) updateUrl({time: Number(time.value).toFixed(2)});
+  };
+  play.addEventListener('click', () => setPlaying(!playing));
+  box.appendChild(play);
+  setPlaying(playing);
+}
+
+// A variant sets every option anew: the controls show the variant's values.
+function reloadOptions(variantName) {
+  const info = lesson;
+  info.variant = variantName;
+  // The options the program now holds come back with the next ready; ask for them by reloading the
+  // page state: simplest and exact.
+  location.search = '?' + params.toString();
+}
+
+window.Module = {
+  canvas: document.getElementById('canvas'),
+  arguments: commandLine(),
+  print: log,
+  printErr: log,
+  postRun: [() => {
+    if (!snapshot) return;
+    if (failed || !lesson) {
+      if (!failed) StencilPage.error('the lesson did not start');
+      return;
+    }
+    if (Module._stencil_web_snapshot() === 0) document.title = 'snapshot-ready';
+  }],
+  onAbort: what => StencilPage.error('the lesson stopped: ' + what),
+};
+window.addEventListener('error', e => StencilPage.error(e.message));
+
+const program = document.createElement('script');
+program.src = lessonId + '.js';
+document.body.appendChild(program);
