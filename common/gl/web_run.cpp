@@ -1,7 +1,9 @@
 // The browser's runLesson (the Emscripten build): the lesson page's script (common/web/lesson.js)
 // turns the page's URL into the lesson's command line (--variant, --time, --size, --set), and this
 // file makes the session on the page's canvas, shows each frame there, and answers the page's
-// calls: play, pause, a frame at a time, a variant, an option, and the snapshot the tests read.
+// calls: play, pause, a frame at a time, a variant, an option, a view (colour, the stencil as the
+// window's ramp, in grey or as bit planes), a pass to stop after (the pass stepper), and the
+// snapshot the tests read.
 // A bad setting is one line on the page, as on the command line, and nothing is drawn.
 #ifdef __EMSCRIPTEN__
 #include <emscripten/emscripten.h>
@@ -16,6 +18,7 @@
 #include "gl/lesson.h"
 #include "gl/options.h"
 #include "gl/session.h"
+#include "gl/stencil_view.h"
 
 // The page's side (common/web/lesson.js): StencilPage.
 EM_JS(void, stencil_page_error, (const char* message), { StencilPage.error(UTF8ToString(message)); });
@@ -38,6 +41,9 @@ struct WebRun {
   double time = 0;           // the frame's time, seconds
   double playedFrom = 0;     // performance.now() when play began, ms
   double playedFromTime = 0;  // the frame's time then
+  int view = 0;               // kViewNames: colour, stencil, grey, bits (depth is not in the browser)
+  std::optional<std::size_t> pass;  // show the frame as it was after this pass; none: the whole frame
+  GLuint pictureTexture = 0, pictureFbo = 0;
 };
 
 std::unique_ptr<WebRun> run;
@@ -70,15 +76,59 @@ std::string lessonJson(const WebRun& r) {
       .dump();
 }
 
-// Renders the frame at `time` and shows it on the canvas.
+// Shows a picture (top row first, RGBA) on the canvas, scaled to it.
+void showPicture(const Image& picture, int canvasWidth, int canvasHeight) {
+  WebRun& r = *run;
+  if (!r.pictureTexture) {
+    glGenTextures(1, &r.pictureTexture);
+    glGenFramebuffers(1, &r.pictureFbo);
+  }
+  glBindTexture(GL_TEXTURE_2D, r.pictureTexture);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, picture.width, picture.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+               picture.pixels.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, r.pictureFbo);
+  glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, r.pictureTexture, 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  // The picture's first row is its top: the blit turns it over onto the canvas.
+  glBlitFramebuffer(0, picture.height, picture.width, 0, 0, 0, canvasWidth, canvasHeight, GL_COLOR_BUFFER_BIT,
+                    GL_NEAREST);
+}
+
+// The stencil as the view shows it.
+Image stencilViewPicture(const Image& stencil, int view) {
+  if (view == 3) return stencilBitPlanes(stencil);
+  if (view == 2) {
+    Image grey(stencil.width, stencil.height, 4);
+    for (std::size_t i = 0; i < stencil.pixels.size(); ++i) {
+      std::uint8_t* p = &grey.pixels[4 * i];
+      p[0] = p[1] = p[2] = stencil.pixels[i];
+      p[3] = 255;
+    }
+    return grey;
+  }
+  return stencilRamp(stencil, StencilRampStyle{.legend = false});
+}
+
+// Renders the frame at `time` and shows it on the canvas: in the view asked for, whole or as it was
+// after the pass asked for.
 void renderAndShow(double time) {
   Session& s = *run->session;
   run->time = time;
-  s.renderFrame(time, FrameRequest{});
+  FrameRequest request;
+  request.captureOnly = run->pass;
+  s.renderFrame(time, request);
   const int w = s.framebuffer->width(), h = s.framebuffer->height();
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, s.framebuffer->id());
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-  glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  const Snapshot* snapshot = run->pass && !s.recorder->snapshots().empty() ? &s.recorder->snapshots().front() : nullptr;
+  if (snapshot)
+    showPicture(run->view == 0 ? snapshot->colour : stencilViewPicture(snapshot->stencil, run->view), w, h);
+  else if (run->view != 0)
+    showPicture(stencilViewPicture(s.framebuffer->readStencil(), run->view), w, h);
+  else {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, s.framebuffer->id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
   nlohmann::ordered_json passes = nlohmann::ordered_json::array();
   for (const PassStats& p : s.recorder->passStats()) passes.push_back(p.label);
   stencil_page_frame(time, passes.dump().c_str());
@@ -172,6 +222,31 @@ EMSCRIPTEN_KEEPALIVE void stencil_web_time(double time) {
   run->playedFrom = stencil_page_now();
   run->playedFromTime = time;
   stencil::guarded([time] { stencil::renderAndShow(time); });
+}
+
+// The view (0 colour, 1 stencil, 2 grey, 3 bits: kViewNames), then the current frame again.
+EMSCRIPTEN_KEEPALIVE int stencil_web_view(int view) {
+  if (!run || !run->session) return 1;
+  return stencil::guarded([view] {
+           if (view < 0 || view > 3)
+             throw stencil::UsageError("view " + std::to_string(view) +
+                                       ": the browser has colour, stencil, grey and bits (no depth yet)");
+           run->view = view;
+           stencil::renderAndShow(run->time);
+         })
+             ? 0
+             : 1;
+}
+
+// The frame as it was after pass `index` (0 the first that ran), or the whole frame (-1).
+EMSCRIPTEN_KEEPALIVE int stencil_web_pass(int index) {
+  if (!run || !run->session) return 1;
+  return stencil::guarded([index] {
+           run->pass = index < 0 ? std::nullopt : std::optional<std::size_t>(static_cast<std::size_t>(index));
+           stencil::renderAndShow(run->time);
+         })
+             ? 0
+             : 1;
 }
 
 // A variant by name, then the current frame again. Returns 0, or 1 after saying why on the page.

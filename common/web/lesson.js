@@ -2,7 +2,8 @@
 // (NN-name.js, built by Emscripten from the lesson's C++) runs on the canvas, and the controls are
 // made from the lesson's own declarations (LessonInfo), which the program hands over when ready.
 //
-// The URL: ?variant=V&time=T&size=WxH&set=NAME:VALUE,NAME:VALUE&paused=1
+// The URL: ?variant=V&time=T&size=WxH&set=NAME:VALUE,NAME:VALUE&paused=1&view=stencil&pass=3
+// (view: colour, stencil, grey or bits; pass: the frame as it was after that pass, 1 the first)
 // The snapshot contract (the tests'): with &snapshot=1 the frame at that time and size is drawn,
 // then <img id="snapshot-colour"> and <img id="snapshot-stencil"> (PNG data URLs; the stencil one
 // grey byte a pixel, as --stencil-out's .raw.png) are added to the page and document.title is
@@ -16,6 +17,8 @@ const statusLine = document.getElementById('status');
 const logBox = document.getElementById('log');
 let lesson = null;  // the lesson's declarations, once its program is ready
 let failed = false;
+let passLabels = [];  // the passes the last frame ran
+const views = ['colour', 'stencil', 'grey', 'bits'];
 
 function log(text) {
   console.log(text);
@@ -73,8 +76,10 @@ window.StencilPage = {
   },
   frame(time, passes) {
     if (failed) return;
+    passLabels = passes;
     statusLine.className = '';
     statusLine.textContent = 't = ' + time.toFixed(2) + ' s; passes: ' + passes.join(', ');
+    showPass();
     const timeBox = document.getElementById('time');
     if (timeBox && document.activeElement !== timeBox) timeBox.value = time.toFixed(2);
   },
@@ -142,6 +147,43 @@ function makeControls(info) {
     updateUrl({time: time.value});
   });
   label('time (s)', time);
+  const view = document.createElement('select');
+  view.id = 'view';
+  for (const name of views.concat(['depth'])) {
+    const option = document.createElement('option');
+    option.value = name;
+    option.textContent = name === 'depth' ? 'depth (not in the browser yet)' : name;
+    option.disabled = name === 'depth';
+    view.appendChild(option);
+  }
+  view.addEventListener('change', () => {
+    if (Module._stencil_web_view(views.indexOf(view.value)) === 0)
+      updateUrl({view: view.value === 'colour' ? null : view.value});
+  });
+  label('view', view);
+  // The pass stepper: the frame as it was after each pass that ran, forward and back.
+  const stepper = document.createElement('span');
+  stepper.id = 'stepper';
+  const back = document.createElement('button'), forward = document.createElement('button');
+  back.id = 'pass-back';
+  forward.id = 'pass-forward';
+  back.textContent = '\u25c0';
+  forward.textContent = '\u25b6';
+  const passName = document.createElement('span');
+  passName.id = 'pass-name';
+  stepper.append(back, ' ', passName, ' ', forward);
+  const step = delta => {
+    const count = passLabels.length;
+    // 0 the whole frame; 1..count after that pass
+    currentPass = ((currentPass + delta) % (count + 1) + count + 1) % (count + 1);
+    if (currentPass > 0) setPlaying(false);
+    Module._stencil_web_pass(currentPass - 1);
+    updateUrl({pass: currentPass || null});
+    showPass();
+  };
+  back.addEventListener('click', () => step(-1));
+  forward.addEventListener('click', () => step(1));
+  label('pass ', stepper);
   const play = document.createElement('button');
   play.id = 'play';
   let playing = params.get('paused') !== '1';
@@ -154,7 +196,27 @@ function makeControls(info) {
   };
   play.addEventListener('click', () => setPlaying(!playing));
   box.appendChild(play);
+  // The URL's view and pass.
+  if (views.includes(params.get('view'))) {
+    view.value = params.get('view');
+    Module._stencil_web_view(views.indexOf(view.value));
+  }
+  const passParam = Number(params.get('pass') || 0);
+  if (Number.isInteger(passParam) && passParam > 0) {
+    currentPass = passParam;
+    playing = false;
+    Module._stencil_web_pass(currentPass - 1);
+  }
   setPlaying(playing);
+  showPass();
+}
+
+let currentPass = 0;  // 0: the whole frame; N: as it was after the N-th pass that ran
+function showPass() {
+  const name = document.getElementById('pass-name');
+  if (!name) return;
+  name.textContent = currentPass === 0 ? 'whole frame (' + passLabels.length + ' passes)'
+      : currentPass + ' of ' + passLabels.length + ': ' + (passLabels[currentPass - 1] ?? '(not run in this frame)');
 }
 
 // A variant sets every option anew: the controls show the variant's values.
