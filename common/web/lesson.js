@@ -110,11 +110,11 @@ function makeControls(info) {
     option.selected = v.name === info.variant;
     variant.appendChild(option);
   }
+  // A variant sets every option anew: the page loads again with it in the URL, so that the
+  // controls show the variant's values.
   variant.addEventListener('change', () => {
-    if (Module.ccall('stencil_web_variant', 'number', ['string'], [variant.value]) !== 0) return;
-    updateUrl({variant: variant.value, set: null});
-    failed = false;
-    reloadOptions(variant.value);
+    updateUrl({variant: variant.value, set: null, pass: null});
+    location.search = '?' + params.toString();
   });
   label('variant', variant, info.variants.find(v => v.name === info.variant)?.help);
   for (const o of info.options) {
@@ -217,15 +217,6 @@ function showPass() {
   if (!name) return;
   name.textContent = currentPass === 0 ? 'whole frame (' + passLabels.length + ' passes)'
       : currentPass + ' of ' + passLabels.length + ': ' + (passLabels[currentPass - 1] ?? '(not run in this frame)');
-}
-
-// A variant sets every option anew: the controls show the variant's values.
-function reloadOptions(variantName) {
-  const info = lesson;
-  info.variant = variantName;
-  // The options the program now holds come back with the next ready; ask for them by reloading the
-  // page state: simplest and exact.
-  location.search = '?' + params.toString();
 }
 
 window.Module = {
