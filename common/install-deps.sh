@@ -3,6 +3,8 @@
 # missing: with apt-get as root, with sudo if it needs no password, otherwise it prints
 # the exact command and stops. With --opencsg it adds the packages lesson 14's benchmark beside
 # OpenCSG needs (tests/bench/csg_opencsg_benchmark.cpp); the default build does without them.
+# With --web it adds what the course in a browser needs (cmake --preset web, ctest -L web):
+# Emscripten, pandoc for the pages, Chromium for the tests; the native course does without them.
 set -euo pipefail
 
 packages=(
@@ -20,9 +22,14 @@ packages=(
   xvfb xauth xdotool                 # the window tests run under a virtual display and press keys
 )
 optional=(libosmesa6-dev)            # newer Mesa releases dropped OSMesa; EGL then serves
-if [ "${1:-}" = "--opencsg" ]; then
-  packages+=(libopencsg-dev libglew-dev libx11-dev libgl-dev)  # OpenCSG 1.5 draws through GLEW on GLX
-fi
+for group in "$@"; do
+  case "$group" in
+    --opencsg) packages+=(libopencsg-dev libglew-dev libx11-dev libgl-dev) ;;  # OpenCSG 1.5 draws through GLEW on GLX
+    # Emscripten's optimizer needs acorn (node-acorn, found through NODE_PATH=/usr/share/nodejs).
+    --web) packages+=(emscripten node-acorn pandoc chromium) ;;
+    *) echo "install-deps.sh: unknown group '$group' (--opencsg, --web)" >&2; exit 2 ;;
+  esac
+done
 
 installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
 

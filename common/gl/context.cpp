@@ -21,6 +21,7 @@ const char* backendName(Backend b) {
     case Backend::Osmesa: return "osmesa";
     case Backend::Egl: return "egl";
     case Backend::Window: return "window";
+    case Backend::Web: return "webgl";
   }
   return "?";
 }
@@ -42,11 +43,17 @@ bool osmesaAvailable() {
 
 std::string GlFeatures::summary() const {
   auto yn = [](bool b) { return b ? "yes" : "no"; };
-  return std::string("depth_bounds_test=") + yn(depthBoundsTest) +
-         " pipeline_statistics=" + yn(pipelineStatistics) + " clip_control=" + yn(clipControl) +
-         " khr_debug=" + yn(khrDebug) + " depth_clamp=" + yn(depthClamp);
+  std::string line = std::string("depth_bounds_test=") + yn(depthBoundsTest) +
+                     " pipeline_statistics=" + yn(pipelineStatistics) + " clip_control=" + yn(clipControl) +
+                     " khr_debug=" + yn(khrDebug) + " depth_clamp=" + yn(depthClamp);
+  if (webgl)
+    line += std::string(" clip_distance=") + yn(clipDistance) + " timer_query=" + yn(timerQuery) +
+            " float_colour=" + yn(floatColour) + " samples_passed=" + yn(samplesPassed) +
+            " stencil_read_pixels=" + yn(stencilReadPixels);
+  return line;
 }
 
+#ifndef __EMSCRIPTEN__
 void Context::loadGl(GlProc (*getProcAddress)(const char*)) {
   int version = gladLoadGL(getProcAddress);
   if (version == 0) throw NoContextError("could not load OpenGL entry points");
@@ -76,11 +83,17 @@ void Context::loadGl(GlProc (*getProcAddress)(const char*)) {
   f.depthClamp = true;  // core since 3.2, so guaranteed by the 3.3 floor
 }
 
+std::unique_ptr<Context> createWebContext(int, int) {
+  throw NoContextError("a WebGL context exists only in the browser build (cmake --preset web)");
+}
+#endif
+
 std::unique_ptr<Context> createContext(Backend b, int width, int height, const std::string& title) {
   switch (b) {
     case Backend::Osmesa: return createOsmesaContext(width, height);
     case Backend::Egl: return createEglContext();
     case Backend::Window: return createWindowContext(width, height, title);
+    case Backend::Web: return createWebContext(width, height);
   }
   throw NoContextError("unknown backend");
 }

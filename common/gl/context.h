@@ -1,6 +1,7 @@
-// One interface over three ways to get an OpenGL 3.3 core context: OSMesa (software,
-// deterministic), EGL (surfaceless or device platform: a GPU where there is one) and a
-// GLFW window. Lessons never see which one they run on; they render into a Framebuffer.
+// One interface over the ways to get an OpenGL 3.3 core context: OSMesa (software,
+// deterministic), EGL (surfaceless or device platform: a GPU where there is one), a GLFW
+// window, and in the browser a WebGL 2 canvas (the Emscripten build: context_web.cpp, gl_web.h).
+// Lessons never see which one they run on; they render into a Framebuffer.
 #pragma once
 #include <memory>
 #include <optional>
@@ -10,7 +11,7 @@ struct GLFWwindow;
 
 namespace stencil {
 
-enum class Backend { Osmesa, Egl, Window };
+enum class Backend { Osmesa, Egl, Window, Web };
 
 const char* backendName(Backend);
 std::optional<Backend> parseBackend(const std::string&);
@@ -25,6 +26,14 @@ struct GlFeatures {
   bool clipControl = false;         // ARB_clip_control (core in 4.5)
   bool khrDebug = false;            // KHR_debug (core in 4.3)
   bool depthClamp = false;          // ARB_depth_clamp (core in 3.2)
+  // What GL 3.3 core always has and WebGL 2 has only through an extension, or not at all: true
+  // on the desktop, detected in the browser (webgl).
+  bool webgl = false;              // a WebGL 2 context (the browser build)
+  bool clipDistance = true;        // gl_ClipDistance (WEBGL_clip_cull_distance)
+  bool timerQuery = true;          // GL_TIME_ELAPSED queries (EXT_disjoint_timer_query_webgl2)
+  bool floatColour = true;         // float colour buffers drawn into and blended (EXT_color_buffer_float, EXT_float_blend)
+  bool samplesPassed = true;       // counting occlusion queries (WebGL 2's are only boolean)
+  bool stencilReadPixels = true;   // glReadPixels of GL_STENCIL_INDEX (WebGL 2 reads bit planes)
   std::string summary() const;      // one line: "depth_bounds_test=no clip_control=yes ..."
 };
 
@@ -40,6 +49,8 @@ class Context {
   // Throws NoContextError when the context is below GL 3.3.
   using GlProc = void (*)();
   void loadGl(GlProc (*getProcAddress)(const char*));
+  // The browser's: WebGL 2's entry points are linked in; enables and detects its extensions.
+  void detectWebGl();
 
  private:
   GlFeatures features_;
@@ -72,5 +83,7 @@ BackendChoice headlessBackend(const std::string& why);
 std::unique_ptr<Context> createOsmesaContext(int width, int height);
 std::unique_ptr<Context> createEglContext();
 std::unique_ptr<Context> createWindowContext(int width, int height, const std::string& title);
+// A WebGL 2 context on the page's <canvas id="canvas">, width x height (only in the browser build).
+std::unique_ptr<Context> createWebContext(int width, int height);
 
 }  // namespace stencil

@@ -10,10 +10,12 @@ namespace {
 
 std::vector<std::string> debugErrors;
 
+#ifndef __EMSCRIPTEN__
 void GLAD_API_PTR onDebugMessage(GLenum, GLenum type, GLuint, GLenum, GLsizei, const GLchar* message,
                                  const void*) {
   if (type == GL_DEBUG_TYPE_ERROR) debugErrors.emplace_back(message);
 }
+#endif
 
 const char* errorName(GLenum e) {
   switch (e) {
@@ -29,10 +31,14 @@ const char* errorName(GLenum e) {
 }  // namespace
 
 void enableDebugOutput(const GlFeatures& features) {
+#ifdef __EMSCRIPTEN__
+  (void)features;  // WebGL has no debug output: glGetError alone reports errors
+#else
   if (!features.khrDebug || !glDebugMessageCallback) return;
   glEnable(GL_DEBUG_OUTPUT);
   glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);  // so the error lands in the pass that caused it
   glDebugMessageCallback(onDebugMessage, nullptr);
+#endif
 }
 
 void checkGlErrors(const std::string& where) {

@@ -233,7 +233,7 @@ void OutputSet::add(const fs::path& path, std::string bytes) {
   files_.push_back({path, std::move(bytes)});
 }
 
-void OutputSet::addPng(const fs::path& path, const Image& image) {
+std::string encodePng(const Image& image) {
   std::string png;
   const auto append = [](void* context, void* data, int size) {
     static_cast<std::string*>(context)->append(static_cast<const char*>(data),
@@ -241,7 +241,18 @@ void OutputSet::addPng(const fs::path& path, const Image& image) {
   };
   if (!stbi_write_png_to_func(append, &png, image.width, image.height, image.channels, image.pixels.data(),
                               image.width * image.channels))
+    throw OutputError("could not encode a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                      " image as PNG");
+  return png;
+}
+
+void OutputSet::addPng(const fs::path& path, const Image& image) {
+  std::string png;
+  try {
+    png = encodePng(image);
+  } catch (const OutputError&) {
     throw OutputError("could not encode " + path.string() + " as PNG");
+  }
   add(path, std::move(png));
 }
 

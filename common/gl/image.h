@@ -24,6 +24,9 @@ struct Image {
 
 // Writes a PNG with writeFile. Throws OutputError (gl/errors.h) on failure.
 void writePng(const std::filesystem::path&, const Image&);
+// The PNG file's bytes for an image (1 channel: grey; 4: RGBA). Throws OutputError when stb cannot
+// encode it.
+std::string encodePng(const Image&);
 // Reads a PNG with the given channel count (1 or 4). Throws std::runtime_error on failure.
 Image readPng(const std::filesystem::path&, int channels);
 

@@ -176,6 +176,8 @@ void resetFrameState(unsigned framebuffer, glm::ivec2 size, const GlFeatures& fe
 }
 
 // ---- headless run -----------------------------------------------------------------------
+// The browser runs a lesson its own way (web_run.cpp): a page, not a command line's files.
+#ifndef __EMSCRIPTEN__
 
 namespace {
 
@@ -755,5 +757,7 @@ int runLesson(const LessonInfo& info, const LessonFactory& factory, int argc, ch
 int runSceneLesson(const LessonInfo& info, const SceneLessonFactory& factory, int argc, char** argv) {
   return runProgram(info, factory, true, argc, argv);
 }
+
+#endif  // __EMSCRIPTEN__
 
 }  // namespace stencil

@@ -50,7 +50,7 @@ PassRecorder::PassRecorder(std::vector<std::string> declaredPasses, const Frameb
       framebuffer_(framebuffer),
       pipelineStatistics_(features.pipelineStatistics) {
   GLint bits = 0;
-  glGetQueryiv(GL_TIME_ELAPSED, GL_QUERY_COUNTER_BITS, &bits);
+  if (features.timerQuery) glGetQueryiv(GL_TIME_ELAPSED, GL_QUERY_COUNTER_BITS, &bits);
   timerCounts_ = bits > 0;
   // Mesa binds a framebuffer in the driver only at the first clear or draw into it. A timer query
   // begun before the driver has any framebuffer is binned into no tile, so it never records its
@@ -135,7 +135,11 @@ void PassRecorder::pass(std::string_view name, std::string_view detail) {
                           .framebuffer = source,
                           .colour = readColourPixels(source, w, h),
                           .stencil = readStencilPixels(source, w, h),
+#ifdef __EMSCRIPTEN__
+                          .depth = {}});  // WebGL 2 cannot read depth back: the browser's snapshots have none
+#else
                           .depth = readDepthPixels(source, w, h)});
+#endif
     glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read));
     glPixelStorei(GL_PACK_ALIGNMENT, packAlignment);
     checkGlErrors("while reading the snapshot of pass '" + current_.name + "'");

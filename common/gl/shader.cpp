@@ -21,9 +21,18 @@ std::string readText(const std::filesystem::path& path) {
   return text.str();
 }
 
-GLuint compile(GLenum stage, const std::string& relative) {
+// The uniforms' initial values that the browser's GLSL cannot declare (glslForWebGl): compile adds
+// each stage's, the Program sets them after linking.
+GLuint compile(GLenum stage, const std::string& relative, std::vector<UniformDefault>& defaults) {
   const std::filesystem::path path = findShader(relative);
+#ifdef __EMSCRIPTEN__
+  WebGlShader es = glslForWebGl(readText(path));
+  const std::string source = std::move(es.source);
+  defaults.insert(defaults.end(), es.defaults.begin(), es.defaults.end());
+#else
   const std::string source = readText(path);
+  (void)defaults;
+#endif
   const char* text = source.c_str();
   GLuint shader = glCreateShader(stage);
   glShaderSource(shader, 1, &text, nullptr);
@@ -63,9 +72,36 @@ std::filesystem::path findShader(const std::string& relative) {
   throw UsageError("shader '" + relative + "' not found; tried: " + tried);
 }
 
+WebGlShader glslForWebGl(const std::string& source) {
+  static const std::string desktop = "#version 330 core";
+  if (source.compare(0, desktop.size(), desktop) != 0) return {source, {}};
+  const std::size_t lineEnd = source.find('\n');
+  if (lineEnd == std::string::npos || source.find_first_not_of(" \t\r", desktop.size()) < lineEnd)
+    return {source, {}};
+  WebGlShader out;
+  out.source = "#version 300 es\n";
+  if (source.find("gl_ClipDistance") != std::string::npos)
+    out.source += "#extension GL_ANGLE_clip_cull_distance : enable\n";
+  out.source += "precision highp float;\nprecision highp int;\nprecision highp sampler2D;\n#line 2\n";
+  // Line by line, so the line numbers stay; an initialiser is cut from its line.
+  static const std::regex initialised(R"(^(\s*uniform\s+(float|int)\s+(\w+))\s*=\s*([-+0-9.eE]+)\s*;(.*)$)");
+  std::istringstream lines(source.substr(lineEnd + 1));
+  std::string line;
+  while (std::getline(lines, line)) {
+    std::smatch m;
+    if (std::regex_match(line, m, initialised)) {
+      out.defaults.push_back({m[3].str(), m[2].str() == "int", std::strtod(m[4].str().c_str(), nullptr)});
+      line = m[1].str() + ";" + m[5].str();
+    }
+    out.source += line + "\n";
+  }
+  return out;
+}
+
 std::string formatCompileLog(const std::string& file, const std::string& log) {
   static const std::regex mesa(R"(^\s*\d+:(\d+)\(\d+\):\s*(.*)$)");
   static const std::regex nvidia(R"(^\s*\d+\((\d+)\)\s*:\s*(.*)$)");
+  static const std::regex angle(R"(^\s*(?:ERROR|WARNING):\s*\d+:(\d+):\s*(.*)$)");
   std::istringstream lines(log);
   std::string line, first;
   int count = 0;
@@ -73,7 +109,7 @@ std::string formatCompileLog(const std::string& file, const std::string& log) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     if (count++ > 0) continue;
     std::smatch m;
-    if (std::regex_match(line, m, mesa) || std::regex_match(line, m, nvidia))
+    if (std::regex_match(line, m, mesa) || std::regex_match(line, m, nvidia) || std::regex_match(line, m, angle))
       first = file + ":" + m[1].str() + ": " + m[2].str();
     else
       first = file + ": " + line;
@@ -84,10 +120,11 @@ std::string formatCompileLog(const std::string& file, const std::string& log) {
 }
 
 Program::Program(const std::string& vertexFile, const std::string& fragmentFile) {
-  GLuint vs = compile(GL_VERTEX_SHADER, vertexFile);
+  std::vector<UniformDefault> defaults;
+  GLuint vs = compile(GL_VERTEX_SHADER, vertexFile, defaults);
   GLuint fs = 0;
   try {
-    fs = compile(GL_FRAGMENT_SHADER, fragmentFile);
+    fs = compile(GL_FRAGMENT_SHADER, fragmentFile, defaults);
   } catch (...) {
     glDeleteShader(vs);
     throw;
@@ -108,6 +145,12 @@ Program::Program(const std::string& vertexFile, const std::string& fragmentFile)
     glDeleteProgram(id_);
     id_ = 0;
     throw UsageError(vertexFile + " + " + fragmentFile + ": link failed: " + log.c_str());
+  }
+  for (const UniformDefault& d : defaults) {
+    if (d.isInt)
+      set(d.name.c_str(), static_cast<int>(d.value));
+    else
+      set(d.name.c_str(), static_cast<float>(d.value));
   }
 }
 

@@ -43,8 +43,28 @@ class Program {
   GLuint id_ = 0;
 };
 
+// The one rule that turns a GLSL 330 core shader into GLSL ES 3.00 for WebGL 2, applied at load in
+// the browser build (there is no second copy of any shader): the "#version 330 core" line becomes
+// "#version 300 es", the ANGLE clip-distance extension where the shader writes gl_ClipDistance,
+// and high precision for floats, ints and samplers; a #line keeps the file's line numbers. GLSL ES
+// has no uniform initialisers: a float or int uniform's ("uniform float radius = 1e30;") is taken
+// out and kept in `defaults`, which Program sets once the program is linked, as GL would.
+// A source without that first line is returned as it is (the compiler then says why).
+struct UniformDefault {
+  std::string name;
+  bool isInt = false;
+  double value = 0;
+  bool operator==(const UniformDefault&) const = default;
+};
+struct WebGlShader {
+  std::string source;
+  std::vector<UniformDefault> defaults;
+};
+WebGlShader glslForWebGl(const std::string& source);
+
 // Turns a driver's info log into one line, "file:line: message (and N more)", from its
-// first message. Drivers write "0:12(5): error: ..." (Mesa) or "0(12) : error ..." (NVIDIA).
+// first message. Drivers write "0:12(5): error: ..." (Mesa), "0(12) : error ..." (NVIDIA) or
+// "ERROR: 0:12: ..." (ANGLE, the browsers' WebGL).
 std::string formatCompileLog(const std::string& file, const std::string& log);
 
 }  // namespace stencil

@@ -233,6 +233,40 @@ TEST(ShaderLog, MesaAndNvidiaLinesBecomeFileLine) {
   EXPECT_EQ(formatCompileLog("s.vert", ""), "s.vert: compile failed with an empty log");
 }
 
+TEST(ShaderLog, AngleLinesBecomeFileLine) {
+  EXPECT_EQ(formatCompileLog("s.frag", "ERROR: 0:9: 'x' : undeclared identifier\nERROR: 0:9: '=' : dimension mismatch\n"),
+            "s.frag:9: 'x' : undeclared identifier (and 1 more)");
+}
+
+// The browser's one rule: a 330 core shader becomes GLSL ES 3.00 with its line numbers kept.
+TEST(ShaderForWebGl, VersionLineBecomesEsWithPrecisionAndLineKept) {
+  EXPECT_EQ(glslForWebGl("#version 330 core\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n").source,
+            "#version 300 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n#line 2\n"
+            "out vec4 c;\nvoid main() { c = vec4(1.0); }\n");
+}
+
+TEST(ShaderForWebGl, ClipDistanceAsksForTheExtension) {
+  const std::string es = glslForWebGl("#version 330 core\nvoid main() { gl_ClipDistance[0] = 1.0; }\n").source;
+  EXPECT_EQ(es.substr(0, es.find("precision")),
+            "#version 300 es\n#extension GL_ANGLE_clip_cull_distance : enable\n");
+}
+
+// GLSL ES has no uniform initialisers: the value is kept for the Program to set, the line stays.
+TEST(ShaderForWebGl, UniformInitialisersBecomeDefaults) {
+  const WebGlShader es = glslForWebGl(
+      "#version 330 core\nuniform float radius = 1e30;  // bounds\nuniform int twoSided = 0;\nuniform vec3 c;\n");
+  EXPECT_EQ(es.source.substr(es.source.find("#line 2\n") + 8),
+            "uniform float radius;  // bounds\nuniform int twoSided;\nuniform vec3 c;\n");
+  EXPECT_EQ(es.defaults, (std::vector<UniformDefault>{{"radius", false, 1e30}, {"twoSided", true, 0}}));
+}
+
+TEST(ShaderForWebGl, OtherSourcesAreLeftAsTheyAre) {
+  EXPECT_EQ(glslForWebGl("#version 450 core\nvoid main() {}\n").source, "#version 450 core\nvoid main() {}\n");
+  EXPECT_EQ(glslForWebGl("#version 330 core compatibility\nvoid main() {}\n").source,
+            "#version 330 core compatibility\nvoid main() {}\n");
+  EXPECT_EQ(glslForWebGl("#version 330 core").source, "#version 330 core");
+}
+
 // --list-variants is read by CMake one line a variant (tests/variants.cmake): a help that breaks
 // the line would make a test of half a sentence.
 TEST(CommandLine, VariantListIsOneLineAVariant) {

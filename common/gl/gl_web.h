@@ -1,0 +1,49 @@
+// WebGL 2 as a GL 3.3 core subset (the browser build, Emscripten). WebGL 2 is OpenGL ES 3.0:
+// the names below are GL 3.3's that ES lacks. Where a WebGL extension gives the same thing the
+// name carries the extension's value (the same as desktop GL's), and the lessons use it only when
+// Context::features() says the extension is there, as they do on the desktop. The rest are
+// entry points the framework calls only behind a feature it never reports in the browser.
+#pragma once
+#include <GLES3/gl3.h>
+
+// EXT_depth_clamp
+#define GL_DEPTH_CLAMP 0x864F
+// EXT_clip_control
+#define GL_LOWER_LEFT 0x8CA1
+#define GL_NEGATIVE_ONE_TO_ONE 0x935E
+#define GL_ZERO_TO_ONE 0x935F
+// WEBGL_clip_cull_distance
+#define GL_CLIP_DISTANCE0 0x3000
+#define GL_CLIP_DISTANCE1 0x3001
+// EXT_disjoint_timer_query_webgl2
+#define GL_TIME_ELAPSED 0x88BF
+#define GL_QUERY_COUNTER_BITS 0x8864
+// Desktop only: WebGL 2 has boolean occlusion queries and no statistics, depth bounds, debug
+// output or stencil reads (GlFeatures::samplesPassed and the rest are false in the browser).
+#define GL_SAMPLES_PASSED 0x8914
+#define GL_PRIMITIVES_SUBMITTED_ARB 0x82EF
+#define GL_FRAGMENT_SHADER_INVOCATIONS_ARB 0x82F4
+#define GL_DEPTH_BOUNDS_TEST_EXT 0x8890
+#define GL_STENCIL_INDEX 0x1901
+#define GL_DEBUG_OUTPUT 0x92E0
+#define GL_DEBUG_OUTPUT_SYNCHRONOUS 0x8242
+#define GL_DEBUG_TYPE_ERROR 0x824C
+
+inline void glClearDepth(double depth) { glClearDepthf(static_cast<GLfloat>(depth)); }
+inline void glDepthRange(double nearValue, double farValue) {
+  glDepthRangef(static_cast<GLfloat>(nearValue), static_cast<GLfloat>(farValue));
+}
+// WebGL sizes points in the vertex shader only (gl_PointSize).
+inline void glPointSize(GLfloat) {}
+// Query results fit 32 bits in WebGL 2 (GL_ANY_SAMPLES_PASSED, or EXT_disjoint_timer_query's
+// nanoseconds up to about 4 s).
+inline void glGetQueryObjectui64v(GLuint query, GLenum name, GLuint64* value) {
+  GLuint result = 0;
+  glGetQueryObjectuiv(query, name, &result);
+  *value = result;
+}
+// EXT_clip_control's clipControlEXT, called where GlFeatures::clipControl says it is there
+// (context_web.cpp).
+void glClipControl(GLenum origin, GLenum depth);
+// Never reported in the browser (GlFeatures::depthBoundsTest is false); a no-op for the linker.
+inline void glDepthBoundsEXT(double, double) {}

@@ -1,0 +1,241 @@
+// A lesson page's script: the URL's state becomes the lesson's command line, the lesson's program
+// (NN-name.js, built by Emscripten from the lesson's C++) runs on the canvas, and the controls are
+// made from the lesson's own declarations (LessonInfo), which the program hands over when ready.
+//
+// The URL: ?variant=V&time=T&size=WxH&set=NAME:VALUE,NAME:VALUE&paused=1&view=stencil&pass=3
+// (view: colour, stencil, grey or bits; pass: the frame as it was after that pass, 1 the first)
+// The snapshot contract (the tests'): with &snapshot=1 the frame at that time and size is drawn,
+// then <img id="snapshot-colour"> and <img id="snapshot-stencil"> (PNG data URLs; the stencil one
+// grey byte a pixel, as --stencil-out's .raw.png) are added to the page and document.title is
+// "snapshot-ready", or "snapshot-error: MESSAGE" when the frame cannot be drawn.
+'use strict';
+
+const lessonId = document.body.dataset.lesson;
+const params = new URLSearchParams(location.search);
+const snapshot = params.get('snapshot') === '1';
+const statusLine = document.getElementById('status');
+const logBox = document.getElementById('log');
+let lesson = null;  // the lesson's declarations, once its program is ready
+let failed = false;
+let passLabels = [];  // the passes the last frame ran
+const views = ['colour', 'stencil', 'grey', 'bits'];
+
+function log(text) {
+  console.log(text);
+  logBox.textContent += text + '\n';
+}
+
+// The lesson's command line from the URL; what is not a setting of the URL is left out.
+function commandLine() {
+  const args = [];
+  if (params.has('variant')) args.push('--variant', params.get('variant'));
+  if (params.has('time')) args.push('--time', params.get('time'));
+  if (params.has('size')) args.push('--size', params.get('size'));
+  if (params.has('set'))
+    for (const setting of params.get('set').split(',').filter(s => s))
+      args.push('--set', setting.replace(':', '='));
+  return args;
+}
+
+// Keeps the URL the state the page shows, so that a link restores it.
+function updateUrl(changes) {
+  for (const [key, value] of Object.entries(changes)) {
+    if (value === null || value === undefined || value === '') params.delete(key);
+    else params.set(key, value);
+  }
+  history.replaceState(null, '', '?' + params.toString());
+}
+
+function base64(bytes) {
+  let text = '';
+  for (let i = 0; i < bytes.length; i += 0x8000)
+    text += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
+  return btoa(text);
+}
+
+// Called by the lesson's program (common/gl/web_run.cpp).
+window.StencilPage = {
+  error(message) {
+    failed = true;
+    statusLine.textContent = message;
+    statusLine.className = 'error';
+    log('error: ' + message);
+    if (snapshot) document.title = 'snapshot-error: ' + message;
+  },
+  image(id, bytes) {
+    const img = document.createElement('img');
+    img.id = id;
+    img.alt = id;
+    img.src = 'data:image/png;base64,' + base64(bytes);
+    document.getElementById('live').appendChild(img);
+  },
+  ready(info) {
+    lesson = info;  // the program has logged its renderer and features
+    if (snapshot) return;
+    makeControls(info);
+  },
+  frame(time, passes) {
+    if (failed) return;
+    passLabels = passes;
+    statusLine.className = '';
+    statusLine.textContent = 't = ' + time.toFixed(2) + ' s; passes: ' + passes.join(', ');
+    showPass();
+    const timeBox = document.getElementById('time');
+    if (timeBox && document.activeElement !== timeBox) timeBox.value = time.toFixed(2);
+  },
+};
+
+function settingsOf(info) {
+  return info.options.map(o => o.name + ':' + o.value).join(',');
+}
+
+function makeControls(info) {
+  const box = document.getElementById('controls');
+  box.textContent = '';
+  const label = (text, element, title) => {
+    const l = document.createElement('label');
+    l.textContent = text;
+    if (title) l.title = title;
+    l.appendChild(element);
+    box.appendChild(l);
+    return element;
+  };
+  const variant = document.createElement('select');
+  variant.id = 'variant';
+  for (const v of info.variants) {
+    const option = document.createElement('option');
+    option.value = v.name;
+    option.textContent = v.name;
+    option.title = v.help;
+    option.selected = v.name === info.variant;
+    variant.appendChild(option);
+  }
+  // A variant sets every option anew: the page loads again with it in the URL, so that the
+  // controls show the variant's values.
+  variant.addEventListener('change', () => {
+    updateUrl({variant: variant.value, set: null, pass: null});
+    location.search = '?' + params.toString();
+  });
+  label('variant', variant, info.variants.find(v => v.name === info.variant)?.help);
+  for (const o of info.options) {
+    const input = document.createElement('input');
+    input.id = 'option-' + o.name;
+    if (o.min === 0 && o.max === 1) {
+      input.type = 'checkbox';
+      input.checked = o.value !== 0;
+    } else {
+      input.type = 'number';
+      input.min = o.min;
+      input.max = o.max;
+      input.value = o.value;
+    }
+    input.addEventListener('change', () => {
+      const value = input.type === 'checkbox' ? (input.checked ? 1 : 0) : Number(input.value);
+      if (Module.ccall('stencil_web_option', 'number', ['string', 'number'], [o.name, value]) !== 0) return;
+      o.value = value;
+      updateUrl({set: settingsOf(info)});
+    });
+    label(o.name, input, o.help);
+  }
+  const time = document.createElement('input');
+  time.id = 'time';
+  time.type = 'number';
+  time.step = '0.1';
+  time.value = info.time.toFixed(2);
+  time.addEventListener('change', () => {
+    Module._stencil_web_time(Number(time.value));
+    updateUrl({time: time.value});
+  });
+  label('time (s)', time);
+  const view = document.createElement('select');
+  view.id = 'view';
+  for (const name of views.concat(['depth'])) {
+    const option = document.createElement('option');
+    option.value = name;
+    option.textContent = name === 'depth' ? 'depth (not in the browser yet)' : name;
+    option.disabled = name === 'depth';
+    view.appendChild(option);
+  }
+  view.addEventListener('change', () => {
+    if (Module._stencil_web_view(views.indexOf(view.value)) === 0)
+      updateUrl({view: view.value === 'colour' ? null : view.value});
+  });
+  label('view', view);
+  // The pass stepper: the frame as it was after each pass that ran, forward and back.
+  const stepper = document.createElement('span');
+  stepper.id = 'stepper';
+  const back = document.createElement('button'), forward = document.createElement('button');
+  back.id = 'pass-back';
+  forward.id = 'pass-forward';
+  back.textContent = '\u25c0';
+  forward.textContent = '\u25b6';
+  const passName = document.createElement('span');
+  passName.id = 'pass-name';
+  stepper.append(back, ' ', passName, ' ', forward);
+  const step = delta => {
+    const count = passLabels.length;
+    // 0 the whole frame; 1..count after that pass
+    currentPass = ((currentPass + delta) % (count + 1) + count + 1) % (count + 1);
+    if (currentPass > 0) setPlaying(false);
+    Module._stencil_web_pass(currentPass - 1);
+    updateUrl({pass: currentPass || null});
+    showPass();
+  };
+  back.addEventListener('click', () => step(-1));
+  forward.addEventListener('click', () => step(1));
+  label('pass ', stepper);
+  const play = document.createElement('button');
+  play.id = 'play';
+  let playing = params.get('paused') !== '1';
+  const setPlaying = on => {
+    playing = on;
+    play.textContent = on ? 'pause' : 'play';
+    Module._stencil_web_play(on ? 1 : 0);
+    updateUrl({paused: on ? null : '1'});
+    if (!on) updateUrl({time: Number(time.value).toFixed(2)});
+  };
+  play.addEventListener('click', () => setPlaying(!playing));
+  box.appendChild(play);
+  // The URL's view and pass.
+  if (views.includes(params.get('view'))) {
+    view.value = params.get('view');
+    Module._stencil_web_view(views.indexOf(view.value));
+  }
+  const passParam = Number(params.get('pass') || 0);
+  if (Number.isInteger(passParam) && passParam > 0) {
+    currentPass = passParam;
+    playing = false;
+    Module._stencil_web_pass(currentPass - 1);
+  }
+  setPlaying(playing);
+  showPass();
+}
+
+let currentPass = 0;  // 0: the whole frame; N: as it was after the N-th pass that ran
+function showPass() {
+  const name = document.getElementById('pass-name');
+  if (!name) return;
+  name.textContent = currentPass === 0 ? 'whole frame (' + passLabels.length + ' passes)'
+      : currentPass + ' of ' + passLabels.length + ': ' + (passLabels[currentPass - 1] ?? '(not run in this frame)');
+}
+
+window.Module = {
+  canvas: document.getElementById('canvas'),
+  arguments: commandLine(),
+  print: log,
+  printErr: log,
+  postRun: [() => {
+    if (!snapshot) return;
+    if (failed || !lesson) {
+      if (!failed) StencilPage.error('the lesson did not start');
+      return;
+    }
+    if (Module._stencil_web_snapshot() === 0) document.title = 'snapshot-ready';
+  }],
+  onAbort: what => StencilPage.error('the lesson stopped: ' + what),
+};
+window.addEventListener('error', e => StencilPage.error(e.message));
+
+const program = document.createElement('script');
+program.src = lessonId + '.js';
+document.body.appendChild(program);
