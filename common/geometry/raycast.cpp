@@ -43,14 +43,16 @@ inline bool ownsEdge(const Sheared& p, const Sheared& q) {
 
 inline bool hitTriangle(const glm::vec3& origin, const glm::vec3& direction, const glm::vec3& a,
                         const glm::vec3& b, const glm::vec3& c, float tMin, float tMax, float& tOut) {
-  // The ray's largest axis becomes z; x and y follow it, swapped where it points down z so the
-  // winding is kept.
+  // The ray's largest axis becomes z, x and y follow it. The line is sheared as if the ray pointed
+  // up z (`along`: its direction or the opposite): which triangles a line meets, at an edge too,
+  // does not depend on which way the ray runs along it; t follows the ray's own direction.
   const glm::vec3 magnitude = glm::abs(direction);
   const int kz = magnitude.x > magnitude.y ? (magnitude.x > magnitude.z ? 0 : 2) : (magnitude.y > magnitude.z ? 1 : 2);
-  int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+  const int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
   if (!(direction[kz] != 0.0f)) return false;
-  if (direction[kz] < 0.0f) std::swap(kx, ky);
-  const float sx = direction[kx] / direction[kz], sy = direction[ky] / direction[kz], sz = 1.0f / direction[kz];
+  const float way = direction[kz] < 0.0f ? -1.0f : 1.0f;
+  const glm::vec3 along = way * direction;
+  const float sx = along[kx] / along[kz], sy = along[ky] / along[kz], sz = 1.0f / along[kz];
   const glm::vec3 pa = a - origin, pb = b - origin, pc = c - origin;
   const float ax = pa[kx] - sx * pa[kz], ay = pa[ky] - sy * pa[kz];
   const float bx = pb[kx] - sx * pb[kz], by = pb[ky] - sy * pb[kz];
@@ -74,7 +76,7 @@ inline bool hitTriangle(const glm::vec3& origin, const glm::vec3& direction, con
   if (u == 0.0 && ownsEdge(sb, sc) == behind) return false;  // U: the edge b-c
   if (v == 0.0 && ownsEdge(sc, sa) == behind) return false;  // V: the edge c-a
   if (w == 0.0 && ownsEdge(sa, sb) == behind) return false;  // W: the edge a-b
-  const double t = (u * (sz * pa[kz]) + v * (sz * pb[kz]) + w * (sz * pc[kz])) / det;
+  const double t = way * (u * (sz * pa[kz]) + v * (sz * pb[kz]) + w * (sz * pc[kz])) / det;
   if (!(t > tMin && t < tMax)) return false;
   tOut = static_cast<float>(t);
   return true;
