@@ -191,12 +191,24 @@ void optionChanged(WindowState& st, const Option& o) {
   st.sayCountsAfter = 1;
 }
 
-void setUiScale(WindowState& st, float scale) {
+// `window`: the + key's change, which stops where the panel would take more than half the
+// window's width (the picture keeps the rest).
+void setUiScale(WindowState& st, float scale, GLFWwindow* window = nullptr) {
   scale = std::round(scale / kUiScaleStep) * kUiScaleStep;
   if (scale < kMinUiScale || scale > kMaxUiScale) {
     say(st, "ui scale " + scaleText(st.uiScale) + " is the " + (scale < kMinUiScale ? "smallest" : "largest") +
                 " (" + scaleText(kMinUiScale) + " to " + scaleText(kMaxUiScale) + ")");
     return;
+  }
+  if (window && st.panel && scale > st.uiScale) {
+    int ww = 0, wh = 0;
+    glfwGetWindowSize(window, &ww, &wh);
+    if (panelWidth(scale) > ww / 2) {
+      say(st, "ui scale " + scaleText(st.uiScale) + " is the largest this window holds (the panel " +
+                  std::to_string(panelWidth(st.uiScale)) + " px, the picture at least half the window's " +
+                  std::to_string(ww) + " px)");
+      return;
+    }
   }
   if (scale == st.uiScale) return;
   st.uiScale = scale;
@@ -291,7 +303,7 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
       return;
     }
     case GLFW_KEY_EQUAL:
-    case GLFW_KEY_KP_ADD: setUiScale(st, st.uiScale + kUiScaleStep); return;
+    case GLFW_KEY_KP_ADD: setUiScale(st, st.uiScale + kUiScaleStep, w); return;
     case GLFW_KEY_MINUS:
     case GLFW_KEY_KP_SUBTRACT: setUiScale(st, st.uiScale - kUiScaleStep); return;
     case GLFW_KEY_V: {
@@ -417,10 +429,13 @@ std::optional<std::string> fullWidthCombo(const char* id, const std::string& lab
 
 // An integer slider `width` wide with `label` beside it, its text beside its grab rather than over
 // it: in the wider of the two parts of the frame the grab leaves, `text` where it fits there, else
-// as much of it as fits with "...", else `shortText` (else that, clipped, and said as cut). While a typed edit is open (ctrl+click) ImGui
-// draws the field. Returns whether the value changed; `hovered` says whether the pointer is on it.
+// (`textBelow`) `shortText` there and `text` wrapped on a line of its own under the slider, else as
+// much of it as fits with "..." (said as cut where `keepFull`: a value's name), else `shortText`
+// (else that, clipped, and said as cut). While a typed edit is open (ctrl+click) ImGui draws the
+// field. Returns whether the value changed; `hovered` says whether the pointer is on it.
 bool sliderBesideGrab(const std::string& label, int* value, int min, int max, const std::string& text,
-                      const std::string& shortText, float width, bool& hovered, PanelFit& fit) {
+                      const std::string& shortText, float width, bool& hovered, PanelFit& fit,
+                      bool textBelow = false, bool keepFull = false) {
   const ImGuiStyle& style = ImGui::GetStyle();
   const std::string id = "##" + label;
   const bool typing = ImGui::TempInputIsActive(ImGui::GetID(id.c_str()));
@@ -430,6 +445,7 @@ bool sliderBesideGrab(const std::string& label, int* value, int min, int max, co
   const bool changed = ImGui::SliderInt(id.c_str(), value, min, max, "%d");
   if (!typing) ImGui::PopStyleColor();
   hovered = ImGui::IsItemHovered();
+  bool below = false;
   if (!typing) {
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
     // The grab as ImGui 1.86 places it (SliderBehaviorT): 2 px in from the frame, an integer
@@ -446,13 +462,17 @@ bool sliderBesideGrab(const std::string& label, int* value, int min, int max, co
     // Else the longest start of `text` that fits with "..." (the number first: "8: shadows (li..."),
     // else the short text.
     std::string shown = text;
-    if (ImGui::CalcTextSize(shown.c_str()).x > to - from) {
+    if (ImGui::CalcTextSize(shown.c_str()).x > to - from && textBelow && text != shortText) {
+      shown = shortText;
+      below = true;
+    } else if (ImGui::CalcTextSize(shown.c_str()).x > to - from) {
       shown = shortText;
       for (std::size_t n = text.size(); n-- > shortText.size();)
         if (const std::string start = text.substr(0, n) + "..."; ImGui::CalcTextSize(start.c_str()).x <= to - from) {
           shown = start;
           break;
         }
+      if (keepFull) fit.cut.push_back(label + " " + shown);
     }
     const float w = ImGui::CalcTextSize(shown.c_str()).x;
     if (w > to - from) fit.cut.push_back(label + " " + shown);
@@ -465,6 +485,10 @@ bool sliderBesideGrab(const std::string& label, int* value, int min, int max, co
   ImGui::SameLine(0, style.ItemInnerSpacing.x);
   ImGui::TextUnformatted(label.c_str());
   hovered = hovered || ImGui::IsItemHovered();
+  if (below) {
+    ImGui::TextWrapped("%s", text.c_str());
+    hovered = hovered || ImGui::IsItemHovered();
+  }
   return changed;
 }
 
@@ -579,11 +603,11 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
         hovered = ImGui::IsItemHovered();
         sameRow = true;
       } else {
-        // The value's name where it fits beside the grab, else the number alone (the line it says
-        // and the tooltip give the name).
+        // The value's name where it fits beside the grab, else the number there and the name on a
+        // line of its own under the slider: a named value is never shortened.
         const std::string name = valueName(o, o.value), number = std::to_string(o.value);
         if (sliderBesideGrab(text, &o.value, o.min, o.max, name.empty() ? number : number + ": " + name, number,
-                             sliderWidth, hovered, fit))
+                             sliderWidth, hovered, fit, true, true))
           optionChanged(st, o);
         sameRow = false;
       }
