@@ -135,7 +135,7 @@ TEST(StencilView, ALimitedLegendKeepsTheLowestValuesInValueOrder) {
   std::vector<std::uint8_t> values;
   for (int v = 0; v < 40; ++v)
     values.insert(values.end(), static_cast<std::size_t>(10 + 5 * v), static_cast<std::uint8_t>(v));
-  Image s(100, static_cast<int>(values.size()) / 100, 1);
+  Image s(430, static_cast<int>(values.size()) / 430, 1);  // 4300 pixels: a row of entries holds six
   std::copy_n(values.begin(), s.pixels.size(), s.pixels.begin());
   const Image pic = stencilRamp(s, {.maxLegendRows = 1});
   std::vector<std::uint64_t> histogram(256, 0);
@@ -151,9 +151,9 @@ TEST(StencilView, ALimitedLegendKeepsTheLowestValuesInValueOrder) {
 // The grey view: each pixel its raw value, no rings, and a legend naming the values, so that 1 to 3,
 // all but black on screen, read apart from 0.
 TEST(StencilView, GreyPictureKeepsTheRawValuesAndNamesThemInItsLegend) {
-  Image s(60, 40, 1);
+  Image s(600, 40, 1);  // wide enough for the five entries in one row
   for (int y = 0; y < 40; ++y)
-    for (int x = 0; x < 60; ++x) *s.at(x, y) = static_cast<std::uint8_t>(x < 30 ? 0 : y < 10 ? 1 : y < 20 ? 2 : 3);
+    for (int x = 0; x < 600; ++x) *s.at(x, y) = static_cast<std::uint8_t>(x < 300 ? 0 : y < 10 ? 1 : y < 20 ? 2 : 3);
   *s.at(10, 20) = 4;  // a rare value: no ring in the grey view
   const Image pic = stencilRamp(s, {.grey = true});
   ASSERT_GT(pic.height, s.height);
