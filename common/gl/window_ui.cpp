@@ -69,6 +69,8 @@ struct WindowState {
   bool compact = false;                    // the last frame's panel gave the options all it could
   int layoutFrames = 0;                    // frames drawn since the layout changed
   float leastPanelHeight = 0;              // the panel's height folded as far as it goes (measured; 0 before)
+  float leastPanelScale = 1;               // the UI scale it was measured at
+  float scaleShown = 1;                    // the UI scale when the panel was last shown (F1)
   std::string status = {};                 // a line shown over the picture until statusUntil (tell)
   double statusUntil = 0;
 };
@@ -202,37 +204,55 @@ void optionChanged(WindowState& st, const Option& o) {
   st.sayCountsAfter = 1;
 }
 
-// `window`: the + key's change, which stops where the panel would take more than half the
-// window's width (the picture keeps the rest).
+// Why the panel at `scale` does not hold in a window ww x wh, or empty where it does: it would take
+// more than half the window's width (the picture keeps the rest; said with the panel's width at the
+// scale now), or, folded as far as it goes, run past its height.
+std::string panelTooLarge(const WindowState& st, float scale, int ww, int wh) {
+  if (panelWidth(scale) > ww / 2)
+    return "the panel " + std::to_string(panelWidth(st.uiScale)) + " px, the picture at least half the window's " +
+           std::to_string(ww) + " px";
+  const float least = st.leastPanelHeight * scale / st.leastPanelScale;
+  if (st.leastPanelHeight > 0 && least > static_cast<float>(wh))
+    return "the panel folded needs " + std::to_string(static_cast<int>(std::ceil(least))) + " px at " +
+           scaleText(scale) + ", the window is " + std::to_string(wh) + " px high";
+  return {};
+}
+
+// `window`: the + key's change, which stops where the panel would no longer hold (panelTooLarge).
+// With the panel hidden it goes on (the legends follow it too); F1 brings the panel back at the
+// largest scale that holds it.
 void setUiScale(WindowState& st, float scale, GLFWwindow* window = nullptr) {
   scale = std::round(scale / kUiScaleStep) * kUiScaleStep;
   if (scale < kMinUiScale || scale > kMaxUiScale) {
     tell(st, "ui scale " + scaleText(st.uiScale) + " is the " + (scale < kMinUiScale ? "smallest" : "largest") +
-                " (" + scaleText(kMinUiScale) + " to " + scaleText(kMaxUiScale) + ")");
+                 " (" + scaleText(kMinUiScale) + " to " + scaleText(kMaxUiScale) + ")");
     return;
   }
-  // Hidden or not: F1 brings the panel back at this scale.
-  if (window && scale > st.uiScale) {
+  if (window && st.panel && scale > st.uiScale) {
     int ww = 0, wh = 0;
     glfwGetWindowSize(window, &ww, &wh);
-    if (panelWidth(scale) > ww / 2) {
-      tell(st, "ui scale " + scaleText(st.uiScale) + " is the largest this window holds (the panel " +
-                   std::to_string(panelWidth(st.uiScale)) + " px, the picture at least half the window's " +
-                   std::to_string(ww) + " px)");
-      return;
-    }
-    // The panel folded as far as it goes grows with the scale; it must still fit the height.
-    const float least = st.leastPanelHeight * scale / st.uiScale;
-    if (st.leastPanelHeight > 0 && least > static_cast<float>(wh)) {
-      tell(st, "ui scale " + scaleText(st.uiScale) + " is the largest this window holds (the panel folded needs " +
-                   std::to_string(static_cast<int>(std::ceil(least))) + " px at " + scaleText(scale) +
-                   ", the window is " + std::to_string(wh) + " px high)");
+    if (const std::string why = panelTooLarge(st, scale, ww, wh); !why.empty()) {
+      tell(st, "ui scale " + scaleText(st.uiScale) + " is the largest this window holds (" + why + ")");
       return;
     }
   }
   if (scale == st.uiScale) return;
   st.uiScale = scale;
   st.scaleChanged = st.sayLayout = true;
+}
+
+// F1 showing the panel: a scale raised past what the window holds while it was hidden comes back
+// down to the largest that holds it (never below the scale it had when it was last shown).
+void showPanelAtAScaleItHolds(GLFWwindow* window, WindowState& st) {
+  int ww = 0, wh = 0;
+  glfwGetWindowSize(window, &ww, &wh);
+  float scale = st.uiScale;
+  while (scale > st.scaleShown && !panelTooLarge(st, scale, ww, wh).empty()) scale -= kUiScaleStep;
+  if (scale == st.uiScale) return;
+  tell(st, "ui scale " + scaleText(scale) + ", the largest this window holds with the panel (at " +
+               scaleText(st.uiScale) + ": " + panelTooLarge(st, st.uiScale, ww, wh) + ")");
+  st.uiScale = scale;
+  st.scaleChanged = true;
 }
 
 // ImGui before 1.87 reads keys as held or not when its frame starts, so a key pressed and
@@ -301,6 +321,8 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
     case GLFW_KEY_PAGE_UP: goToLesson(w, st, st.lessonIndex - 1); return;
     case GLFW_KEY_F1:
       st.panel = !st.panel;
+      if (st.panel) showPanelAtAScaleItHolds(w, st);
+      st.scaleShown = st.uiScale;
       st.sayLayout = true;
       return;
     case GLFW_KEY_R:
@@ -726,6 +748,7 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
   fit.keysListed = st.keysOpen;
   st.fixedBelow = ImGui::GetCursorPosY() - bottomStart - bodies - (viewsEnd - viewsStart) - separators;
   // Compact, without a title bar, the options two rows, the views a list and both sections folded.
+  st.leastPanelScale = st.uiScale;
   st.leastPanelHeight = optionsTop + (s.options.empty() ? 0.0f : 2 * row + style.ItemSpacing.y) + row + st.fixedBelow +
                         style.WindowPadding.y;
   fit.contentBottom = ImGui::GetCursorPosY() - style.ItemSpacing.y + style.WindowPadding.y;
@@ -870,6 +893,7 @@ int runWindow(Session& s) {
   float monitorScale = 1.0f, unused = 1.0f;
   glfwGetWindowContentScale(window, &monitorScale, &unused);
   st.uiScale = std::clamp(cl.uiScale.value_or(monitorScale), kMinUiScale, kMaxUiScale);
+  st.scaleShown = st.uiScale;
   if (st.panel && st.uiScale != cl.uiScale.value_or(1.0f))
     glfwSetWindowSize(window, cl.width + panelWidth(st.uiScale), cl.height);
   if (cl.position) glfwSetWindowPos(window, cl.position->first, cl.position->second);
