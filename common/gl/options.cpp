@@ -15,6 +15,13 @@
 namespace stencil {
 namespace {
 
+// 0.5, 4: a constant as the help and lessons/run write it.
+std::string shortNumber(float v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
 template <typename T>
 T parseNumber(const std::string& flag, const std::string& text) {
   T value{};
@@ -201,7 +208,8 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
       const std::string v = value();
       const float scale = parseNumber<float>(flag, v);
       if (scale < kMinUiScale || scale > kMaxUiScale)
-        throw UsageError("--ui-scale must be between 0.5 and 4, got '" + v + "'");
+        throw UsageError("--ui-scale must be between " + shortNumber(kMinUiScale) + " and " +
+                         shortNumber(kMaxUiScale) + ", got '" + v + "'");
       cl.uiScale = scale;
     } else if (flag == "--position") {
       const std::string s = value();

@@ -190,12 +190,17 @@ std::array<Rgb, 256> stencilPictureColours(const std::vector<std::uint64_t>& his
 Image stencilRamp(const Image& stencil, const StencilRampStyle& style) {
   std::vector<std::uint64_t> histogram(256, 0);
   for (std::uint8_t v : stencil.pixels) ++histogram[v];
-  const std::array<Rgb, 256> colours = stencilPictureColours(histogram);
+  std::array<Rgb, 256> colours = stencilPictureColours(histogram);
+  if (style.grey)
+    for (int v = 0; v < 256; ++v) {
+      const auto g = static_cast<std::uint8_t>(v);
+      colours[static_cast<std::size_t>(v)] = {g, g, g};
+    }
 
   const int k = std::max(style.legendScale, 1);
   const int scale = 2 * k, small = 2 * k, entryHeight = 7 * scale + 4 * k, swatch = 5 * scale, gap = 3 * k;
-  // Lay the legend entries out first to know how tall the band is. With a row limit, the most
-  // common values are kept (in ascending order) and the rest counted in a "+N" entry.
+  // Lay the legend entries out first to know how tall the band is. With a row limit, the lowest
+  // values are kept, none skipped, and the rest counted in a "+N" entry.
   std::vector<int> shown;
   for (int v = 0; v < 256; ++v)
     if (histogram[static_cast<size_t>(v)] > 0) shown.push_back(v);
@@ -224,15 +229,11 @@ Image stencilRamp(const Image& stencil, const StencilRampStyle& style) {
   };
   layout(shown, 0);
   if (style.maxLegendRows > 0 && rows > style.maxLegendRows) {
-    // Drop the rarest values one at a time until the rest and their "+N" fit.
-    std::vector<int> byCount = shown;
-    std::stable_sort(byCount.begin(), byCount.end(), [&](int a, int b) {
-      return histogram[static_cast<size_t>(a)] > histogram[static_cast<size_t>(b)];
-    });
-    while (!byCount.empty()) {
-      byCount.pop_back();
-      std::vector<int> kept = byCount;
-      std::sort(kept.begin(), kept.end());
+    // Drop the highest values one at a time until the rest and their "+N" fit: a legend read in
+    // value order that skipped values (the rarest) would look like values missing from the picture.
+    std::vector<int> kept = shown;
+    while (!kept.empty()) {
+      kept.pop_back();
       layout(kept, static_cast<int>(shown.size() - kept.size()));
       if (rows <= style.maxLegendRows) break;
     }
@@ -244,7 +245,7 @@ Image stencilRamp(const Image& stencil, const StencilRampStyle& style) {
     for (int px = 0; px < stencil.width; ++px) fillRect(out, px, py, 1, 1, colours[*stencil.at(px, py)]);
   // A value a handful of pixels hold would be lost among the others: a ring in its colour, 4 pixels
   // out, around each of its pixels, drawn only over pixels of other values.
-  for (int py = 0; py < stencil.height; ++py)
+  for (int py = 0; py < stencil.height && !style.grey; ++py)
     for (int px = 0; px < stencil.width; ++px) {
       const std::uint8_t v = *stencil.at(px, py);
       if (histogram[v] >= kRarePixels) continue;

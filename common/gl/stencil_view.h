@@ -39,12 +39,14 @@ std::array<std::array<std::uint8_t, 3>, 256> stencilPictureColours(
 constexpr std::uint64_t kRarePixels = 16;
 // How the window draws it (the defaults are the headless pictures'): the legend's digits and
 // swatches legendScale times their size; at most maxLegendRows rows of entries (0: as many as
-// the values need), the most common values kept and the others counted as "+N" at the end; or no
-// legend band at all (the window's panel lists the values instead).
+// the values need), the lowest values kept and the others counted as "+N" at the end; or no
+// legend band at all (the window's panel lists the values instead). `grey`: each value v in grey
+// level v (the raw values), no rings, the legend naming the values a near-black picture hides.
 struct StencilRampStyle {
   int legendScale = 1;
   int maxLegendRows = 0;
   bool legend = true;
+  bool grey = false;
 };
 Image stencilRamp(const Image& stencil, const StencilRampStyle& style = {});
 

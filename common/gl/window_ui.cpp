@@ -68,6 +68,11 @@ struct WindowState {
   bool keysOpen = true, statsOpen = true;  // the two sections as the last frame showed them
   bool compact = false;                    // the last frame's panel gave the options all it could
   int layoutFrames = 0;                    // frames drawn since the layout changed
+  float leastPanelHeight = 0;              // the panel's height folded as far as it goes (measured; 0 before)
+  float leastPanelScale = 1;               // the UI scale it was measured at
+  float scaleShown = 1;                    // the UI scale when the panel was last shown (F1)
+  std::string status = {};                 // a line shown over the picture until statusUntil (tell)
+  double statusUntil = 0;
 };
 
 // The panel's width in screen pixels at a UI scale.
@@ -99,6 +104,14 @@ void switchVariant(Session& s, const std::string& name) {
 // and the window tests read it.
 void say(const WindowState& st, const std::string& line) {
   if (!st.session.commandLine.quiet) std::cerr << line << "\n";
+}
+
+// A line the class must read from the window itself, not only the terminal (F2's, the course's
+// ends, a change refused): said, and shown over the top of the picture for a few seconds.
+void tell(WindowState& st, const std::string& line) {
+  say(st, line);
+  st.status = line;
+  st.statusUntil = glfwGetTime() + 6.0;
 }
 
 // The passes the last frame ran, in order, named as they ran (PassStats::label): the stepper goes
@@ -140,7 +153,7 @@ void sayView(WindowState& st) {
 void goToLesson(GLFWwindow* w, WindowState& st, int index) {
   if (st.lessonIndex < 0 || index == st.lessonIndex) return;
   if (index < 0 || index >= static_cast<int>(st.course.size())) {
-    say(st, index < 0 ? "the first lesson of the course" : "the last lesson of the course");
+    tell(st, index < 0 ? "the first lesson of the course" : "the last lesson of the course");
     return;
   }
   st.session.nextLesson = st.course[static_cast<std::size_t>(index)];
@@ -191,28 +204,55 @@ void optionChanged(WindowState& st, const Option& o) {
   st.sayCountsAfter = 1;
 }
 
-// `window`: the + key's change, which stops where the panel would take more than half the
-// window's width (the picture keeps the rest).
+// Why the panel at `scale` does not hold in a window ww x wh, or empty where it does: it would take
+// more than half the window's width (the picture keeps the rest; said with the panel's width at the
+// scale now), or, folded as far as it goes, run past its height.
+std::string panelTooLarge(const WindowState& st, float scale, int ww, int wh) {
+  if (panelWidth(scale) > ww / 2)
+    return "the panel " + std::to_string(panelWidth(st.uiScale)) + " px, the picture at least half the window's " +
+           std::to_string(ww) + " px";
+  const float least = st.leastPanelHeight * scale / st.leastPanelScale;
+  if (st.leastPanelHeight > 0 && least > static_cast<float>(wh))
+    return "the panel folded needs " + std::to_string(static_cast<int>(std::ceil(least))) + " px at " +
+           scaleText(scale) + ", the window is " + std::to_string(wh) + " px high";
+  return {};
+}
+
+// `window`: the + key's change, which stops where the panel would no longer hold (panelTooLarge).
+// With the panel hidden it goes on (the legends follow it too); F1 brings the panel back at the
+// largest scale that holds it.
 void setUiScale(WindowState& st, float scale, GLFWwindow* window = nullptr) {
   scale = std::round(scale / kUiScaleStep) * kUiScaleStep;
   if (scale < kMinUiScale || scale > kMaxUiScale) {
-    say(st, "ui scale " + scaleText(st.uiScale) + " is the " + (scale < kMinUiScale ? "smallest" : "largest") +
-                " (" + scaleText(kMinUiScale) + " to " + scaleText(kMaxUiScale) + ")");
+    tell(st, "ui scale " + scaleText(st.uiScale) + " is the " + (scale < kMinUiScale ? "smallest" : "largest") +
+                 " (" + scaleText(kMinUiScale) + " to " + scaleText(kMaxUiScale) + ")");
     return;
   }
   if (window && st.panel && scale > st.uiScale) {
     int ww = 0, wh = 0;
     glfwGetWindowSize(window, &ww, &wh);
-    if (panelWidth(scale) > ww / 2) {
-      say(st, "ui scale " + scaleText(st.uiScale) + " is the largest this window holds (the panel " +
-                  std::to_string(panelWidth(st.uiScale)) + " px, the picture at least half the window's " +
-                  std::to_string(ww) + " px)");
+    if (const std::string why = panelTooLarge(st, scale, ww, wh); !why.empty()) {
+      tell(st, "ui scale " + scaleText(st.uiScale) + " is the largest this window holds (" + why + ")");
       return;
     }
   }
   if (scale == st.uiScale) return;
   st.uiScale = scale;
   st.scaleChanged = st.sayLayout = true;
+}
+
+// F1 showing the panel: a scale raised past what the window holds while it was hidden comes back
+// down to the largest that holds it (never below the scale it had when it was last shown).
+void showPanelAtAScaleItHolds(GLFWwindow* window, WindowState& st) {
+  int ww = 0, wh = 0;
+  glfwGetWindowSize(window, &ww, &wh);
+  float scale = st.uiScale;
+  while (scale > st.scaleShown && !panelTooLarge(st, scale, ww, wh).empty()) scale -= kUiScaleStep;
+  if (scale == st.uiScale) return;
+  tell(st, "ui scale " + scaleText(scale) + ", the largest this window holds with the panel (at " +
+               scaleText(st.uiScale) + ": " + panelTooLarge(st, st.uiScale, ww, wh) + ")");
+  st.uiScale = scale;
+  st.scaleChanged = true;
 }
 
 // ImGui before 1.87 reads keys as held or not when its frame starts, so a key pressed and
@@ -281,6 +321,8 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
     case GLFW_KEY_PAGE_UP: goToLesson(w, st, st.lessonIndex - 1); return;
     case GLFW_KEY_F1:
       st.panel = !st.panel;
+      if (st.panel) showPanelAtAScaleItHolds(w, st);
+      st.scaleShown = st.uiScale;
       st.sayLayout = true;
       return;
     case GLFW_KEY_R:
@@ -299,7 +341,7 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
                     st.rate.frames(), glfwGetTime(), st.time,
                     st.paused ? ", paused" : st.passStep >= 0 ? ", held" : "");
       if (st.frameLog) st.frameLog->flush();
-      say(st, line);
+      tell(st, line);
       return;
     }
     case GLFW_KEY_EQUAL:
@@ -579,6 +621,7 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
     st.keysOpen = wanted + fixed + views + keysBody <= room;
     st.statsOpen = wanted + fixed + views + (st.keysOpen ? keysBody : 0.0f) + statsBody <= room;
   }
+  const float optionsTop = ImGui::GetCursorPosY() - (st.compact ? 0.0f : ImGui::GetFrameHeight());
   if (!s.options.empty()) {
     const float open = (st.keysOpen ? keysBody : 0.0f) + (st.statsOpen ? statsBody : 0.0f);
     const float shown = std::max(std::min(wanted, room - fixed - views - open), 2 * row);
@@ -679,7 +722,10 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
   std::snprintf(rate, sizeof rate, "%.1f fps, %.1f ms a frame###stats", st.rate.fps(), st.rate.msPerFrame());
   ImGui::SetNextItemOpen(st.statsOpen);
   float bodies = 0;
+  // A click on a header says its line, as every other click does.
+  const bool statsWere = st.statsOpen;
   st.statsOpen = ImGui::CollapsingHeader(rate);
+  if (st.statsOpen != statsWere) say(st, st.statsOpen ? "the draw calls and counts shown" : "the draw calls and counts folded");
   if (st.statsOpen) {
     const float top = ImGui::GetCursorPosY();
     std::uint64_t draws = 0, triangles = 0;
@@ -691,7 +737,9 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
     bodies += ImGui::GetCursorPosY() - top;
   }
   ImGui::SetNextItemOpen(st.keysOpen);
+  const bool keysWere = st.keysOpen;
   st.keysOpen = ImGui::CollapsingHeader("keys");
+  if (st.keysOpen != keysWere) say(st, st.keysOpen ? "the keys listed" : "the keys folded");
   if (st.keysOpen) {
     const float top = ImGui::GetCursorPosY();
     ImGui::TextWrapped("%s", keys.c_str());
@@ -699,10 +747,27 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
   }
   fit.keysListed = st.keysOpen;
   st.fixedBelow = ImGui::GetCursorPosY() - bottomStart - bodies - (viewsEnd - viewsStart) - separators;
+  // Compact, without a title bar, the options two rows, the views a list and both sections folded.
+  st.leastPanelScale = st.uiScale;
+  st.leastPanelHeight = optionsTop + (s.options.empty() ? 0.0f : 2 * row + style.ItemSpacing.y) + row + st.fixedBelow +
+                        style.WindowPadding.y;
   fit.contentBottom = ImGui::GetCursorPosY() - style.ItemSpacing.y + style.WindowPadding.y;
   ImGui::PopAllowKeyboardFocus();
   ImGui::End();
   return fit;
+}
+
+// The line tell() shows: wrapped across the top of the picture's area (from x = left, width wide;
+// the legends are at its foot) in the panel's font, on the panel's background, taking no clicks.
+void drawStatus(const std::string& line, float left, float width) {
+  const float pad = ImGui::GetStyle().WindowPadding.x;
+  ImGui::SetNextWindowPos(ImVec2(left + pad, pad));
+  ImGui::SetNextWindowSize(ImVec2(std::max(width - 2 * pad, 1.0f), 0));  // 0: as high as the text
+  ImGui::Begin("##status", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoNav |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::TextWrapped("%s", line.c_str());
+  ImGui::End();
 }
 
 // Columns x0 .. x0 + width of an image.
@@ -719,7 +784,9 @@ void saveScreenshot(WindowState& st, const Image& image) {
     std::snprintf(name, sizeof name, "screenshot-%s-%03d.png", st.session.info.id.c_str(), st.screenshots++);
   while (std::filesystem::exists(name));
   writePng(name, image);
-  std::cerr << "saved " << (std::filesystem::current_path() / name).string() << "\n";
+  st.status = "saved " + (std::filesystem::current_path() / name).string();
+  st.statusUntil = glfwGetTime() + 6.0;
+  std::cerr << st.status << "\n";
 }
 
 // The fonts and sizes for a UI scale: the default font rebuilt at 13 px x scale (crisp, not
@@ -738,27 +805,35 @@ void applyUiScale(float scale) {
   style.ScaleAllSizes(scale);
 }
 
-// The stencil views' pictures: the values in grey (0 black, 255 white, the raw values as
-// docs/12's figures show them); the bit planes; or each value in its colour with the legend below,
-// its digits the UI scale's size (rounded, at least 1) and at most a fifth (a third above scale 1)
-// of the picture's height high, the rarest values counted as "+N" where they do not fit (the grey
-// view shows every value), so a 256-value stencil keeps most of the window for its picture.
+// The stencil views' pictures, the framebuffer's size: the values in grey (0 black, 255 white, the
+// raw values as docs/12's figures show them) or each in its colour, with the legend below, its
+// digits 10 px x the UI scale (rounded, at least 1) and at most a fifth (a third above scale 1) of
+// the height, the values past that counted as "+N"; or the bit planes. The legend keeps its size
+// on screen: the picture above it is shrunk to make its room, not the legend with it.
 Image stencilViewPicture(View view, const Image& stencil, float uiScale) {
-  if (view == View::StencilGrey) {
-    Image out(stencil.width, stencil.height, 4);
-    for (std::size_t i = 0; i < stencil.pixels.size(); ++i) {
-      std::uint8_t* p = &out.pixels[i * 4];
-      p[0] = p[1] = p[2] = stencil.pixels[i];
-      p[3] = 255;
-    }
-    return out;
-  }
   if (view == View::StencilBits) return stencilBitPlanes(stencil, uiScale);
   const int k = std::max(1, static_cast<int>(std::lround(uiScale)));
   // An entry row is 18 px at scale 1: as many rows as fit in a fifth of the picture at scale 1, a
   // third above it (the larger digits need the rows), at least one.
   const int share = k > 1 ? 3 : 5;
-  return stencilRamp(stencil, {.legendScale = k, .maxLegendRows = std::max(1, stencil.height / share / (18 * k))});
+  const Image ramp = stencilRamp(stencil, {.legendScale = k,
+                                           .maxLegendRows = std::max(1, stencil.height / share / (18 * k)),
+                                           .grey = view == View::StencilGrey});
+  const int band = ramp.height - stencil.height, room = std::max(1, stencil.height - band);
+  // The picture fitted into the room above the band (nearest pixel), centred, on the window's grey.
+  const float fit = std::min(1.0f, static_cast<float>(room) / static_cast<float>(stencil.height));
+  const int w = std::max(1, static_cast<int>(static_cast<float>(stencil.width) * fit)),
+            h = std::max(1, static_cast<int>(static_cast<float>(stencil.height) * fit));
+  const int x0 = (stencil.width - w) / 2, y0 = (room - h) / 2;
+  Image out(stencil.width, stencil.height, 4);
+  for (std::size_t i = 0; i < out.pixels.size(); i += 4)
+    out.pixels[i] = out.pixels[i + 1] = out.pixels[i + 2] = 25, out.pixels[i + 3] = 255;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      std::copy_n(ramp.at(x * stencil.width / w, y * stencil.height / h), 4, out.at(x0 + x, y0 + y));
+  for (int y = 0; y < band && room + y < out.height; ++y)
+    std::copy_n(ramp.at(0, stencil.height + y), static_cast<std::size_t>(4 * stencil.width), out.at(0, room + y));
+  return out;
 }
 
 // A window larger than the screen's work area (--size 1280x720 and the panel on a 1280x720
@@ -818,6 +893,7 @@ int runWindow(Session& s) {
   float monitorScale = 1.0f, unused = 1.0f;
   glfwGetWindowContentScale(window, &monitorScale, &unused);
   st.uiScale = std::clamp(cl.uiScale.value_or(monitorScale), kMinUiScale, kMaxUiScale);
+  st.scaleShown = st.uiScale;
   if (st.panel && st.uiScale != cl.uiScale.value_or(1.0f))
     glfwSetWindowSize(window, cl.width + panelWidth(st.uiScale), cl.height);
   if (cl.position) glfwSetWindowPos(window, cl.position->first, cl.position->second);
@@ -900,7 +976,9 @@ int runWindow(Session& s) {
         s.renderFrame(st.time, request);
       } catch (const UsageError& e) {
         if (s.variant == drawnVariant && s.options == drawnOptions) throw;  // nothing to undo
-        std::cerr << s.info.id << ": " << e.what() << " (kept variant " << drawnVariant << " and its settings)\n";
+        st.status = s.info.id + ": " + e.what() + " (kept variant " + drawnVariant + " and its settings)";
+        st.statusUntil = glfwGetTime() + 6.0;
+        std::cerr << st.status << "\n";
         if (s.variant != drawnVariant) s.setVariant(drawnVariant);
         s.options = drawnOptions;
         s.renderFrame(st.time, request);
@@ -959,6 +1037,10 @@ int runWindow(Session& s) {
       st.closeLists = false;
       PanelFit fit;
       if (st.panel) fit = drawPanel(window, st, static_cast<float>(wh));
+      if (glfwGetTime() < st.statusUntil) {
+        const float left = st.panel ? static_cast<float>(panelWidth(st.uiScale)) : 0.0f;
+        drawStatus(st.status, left, static_cast<float>(ww) - left);
+      }
       if (st.sayCountsAfter >= 0) --st.sayCountsAfter;
       ImGui::Render();
       // A typed edit's start and end (Enter; Esc says its own line).

@@ -114,6 +114,56 @@ TEST(StencilView, RampShowsEachPixelsColourAndAddsALegendBand) {
   EXPECT_EQ(pic.at(2, 5)[0], 0);
 }
 
+// The swatches along the legend's first row of entries, in order: the colours met along the row
+// through their middle that are none of the band's own (its grey, the swatches' outline, the
+// digits' white and the counts' grey).
+std::vector<std::array<std::uint8_t, 3>> firstRowSwatches(const Image& pic, int pictureHeight) {
+  const int y = pictureHeight + 4 + 5;  // legendScale 1: entries 4 px into the band, swatches 10 px high
+  std::vector<std::array<std::uint8_t, 3>> out;
+  for (int x = 0; x < pic.width; ++x) {
+    const std::array<std::uint8_t, 3> c{pic.at(x, y)[0], pic.at(x, y)[1], pic.at(x, y)[2]};
+    const bool band = c[0] == c[1] && c[1] == c[2] && (c[0] == 48 || c[0] == 200 || c[0] == 255 || c[0] == 170);
+    const bool starts = x == 0 || !std::equal(c.begin(), c.end(), pic.at(x - 1, y));
+    if (!band && starts) out.push_back(c);
+  }
+  return out;
+}
+
+// A legend limited to its rows keeps the lowest values, none skipped, however rare they are: here
+// the higher a value the more pixels hold it, and the legend still starts 0, 1, 2.
+TEST(StencilView, ALimitedLegendKeepsTheLowestValuesInValueOrder) {
+  std::vector<std::uint8_t> values;
+  for (int v = 0; v < 40; ++v)
+    values.insert(values.end(), static_cast<std::size_t>(10 + 5 * v), static_cast<std::uint8_t>(v));
+  Image s(430, static_cast<int>(values.size()) / 430, 1);  // 4300 pixels: a row of entries holds six
+  std::copy_n(values.begin(), s.pixels.size(), s.pixels.begin());
+  const Image pic = stencilRamp(s, {.maxLegendRows = 1});
+  std::vector<std::uint64_t> histogram(256, 0);
+  for (std::uint8_t v : s.pixels) ++histogram[v];
+  const auto colours = stencilPictureColours(histogram);
+  const auto swatches = firstRowSwatches(pic, s.height);
+  ASSERT_GE(swatches.size(), 3u);
+  EXPECT_EQ(swatches[0], colours[0]);
+  EXPECT_EQ(swatches[1], colours[1]);
+  EXPECT_EQ(swatches[2], colours[2]);
+}
+
+// The grey view: each pixel its raw value, no rings, and a legend naming the values, so that 1 to 3,
+// all but black on screen, read apart from 0.
+TEST(StencilView, GreyPictureKeepsTheRawValuesAndNamesThemInItsLegend) {
+  Image s(600, 40, 1);  // wide enough for the five entries in one row
+  for (int y = 0; y < 40; ++y)
+    for (int x = 0; x < 600; ++x) *s.at(x, y) = static_cast<std::uint8_t>(x < 300 ? 0 : y < 10 ? 1 : y < 20 ? 2 : 3);
+  *s.at(10, 20) = 4;  // a rare value: no ring in the grey view
+  const Image pic = stencilRamp(s, {.grey = true});
+  ASSERT_GT(pic.height, s.height);
+  for (int y = 0; y < s.height; ++y)
+    for (int x = 0; x < s.width; ++x) ASSERT_EQ(pic.at(x, y)[0], *s.at(x, y)) << x << "," << y;
+  const auto swatches = firstRowSwatches(pic, s.height);
+  const std::vector<std::array<std::uint8_t, 3>> want = {{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {3, 3, 3}, {4, 4, 4}};
+  EXPECT_EQ(swatches, want);
+}
+
 TEST(StencilView, BitPlanesShowEachBitInItsTile) {
   const int n = 32;  // tiles large enough that the label leaves the bottom-right corner clear
   Image s(n, n, 1);
