@@ -253,8 +253,7 @@ ScissorRect Csg::LayerCounts::layer(int k) const {
   glm::ivec2 low(std::numeric_limits<int>::max()), high(-1);
   for (int y = 0; y < box.height; ++y)
     for (int x = 0; x < box.width; ++x)
-      if (counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(box.width) + static_cast<std::size_t>(x)] > k)
-        low = glm::min(low, glm::ivec2(x, y)), high = glm::max(high, glm::ivec2(x, y));
+      if (at(x, y) > k) low = glm::min(low, glm::ivec2(x, y)), high = glm::max(high, glm::ivec2(x, y));
   if (high.x < 0) return {};
   return {box.x + low.x, box.y + low.y, high.x - low.x + 1, high.y - low.y + 1};
 }
@@ -264,9 +263,13 @@ int Csg::LayerCounts::largestWithin(const ScissorRect& r) const {
   int largestThere = 0;
   for (int y = within.y - box.y; y < within.y - box.y + within.height; ++y)
     for (int x = within.x - box.x; x < within.x - box.x + within.width; ++x)
-      largestThere = std::max<int>(
-          largestThere, counts[static_cast<std::size_t>(y) * static_cast<std::size_t>(box.width) + static_cast<std::size_t>(x)]);
+      largestThere = std::max(largestThere, at(x, y));
   return largestThere;
+}
+
+int Csg::LayerCounts::at(int x, int y) const {
+  const std::size_t row = static_cast<std::size_t>(y) * static_cast<std::size_t>(box.width);
+  return counts[row + static_cast<std::size_t>(x)];
 }
 
 // Primitive i's footprint this frame: its object box at its model, as a world box, the world

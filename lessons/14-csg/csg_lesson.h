@@ -54,8 +54,9 @@ class Csg final : public Lesson {
     ScissorRect box;              // the rectangle read (the scissor box)
     std::vector<GLubyte> counts;  // per pixel, rows from the bottom
     int largest = 0;
-    ScissorRect layer(int k) const;   // the rectangle of the pixels with a k-th fragment (count > k)
+    ScissorRect layer(int k) const;  // the rectangle of the pixels with a k-th fragment (count > k)
     int largestWithin(const ScissorRect& r) const;
+    int at(int x, int y) const;  // x, y from the box's corner
   };
   // ---- main.cpp: the algorithms ------------------------------------------------------------------
   void keepSurface(Frame& f, int x, GLenum faces, int s, bool wantInside, GLuint kept, bool trim);

@@ -235,7 +235,7 @@ void Csg::goldfeather(Frame& f, const SumOfProducts& sop, bool layered) {
 // kept where nearest, to be merged once). Returns false when an occlusion query found the layer
 // empty (with the queries option): no later layer has a fragment either.
 bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targets,
-               const std::vector<int>& trimmers, int layer, bool automatic) {
+                    const std::vector<int>& trimmers, int layer, bool automatic) {
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glStencilMask(0xFF);
