@@ -334,6 +334,9 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
 // in depth, carries another tag (OpenCSG records the primitive's ID the same way); the shader
 // still compares the recorded primitive, for two primitives 255 apart. Nothing is written but
 // colour, so the tests run before the lighting (early_fragment_tests in 14-csg/merge.frag).
+// Without stencil export (ARB_shader_stencil_export; WebGL 2) the merge is one pass: each target
+// drawn with its depth and tag written where the shader finds it is the surface (no early tests
+// then: the shader decides before the writes). Both give the same picture.
 void Csg::mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets, bool fromNearest) {
   glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer());
   glActiveTexture(GL_TEXTURE1);
@@ -342,26 +345,28 @@ void Csg::mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& 
   glBindTexture(GL_TEXTURE_2D, fromNearest ? nearestDepth_ : workDepth_);
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_STENCIL_TEST);
-  // 1. The surface's depth where it is the nearest yet, its primitive in the stencil.
-  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthFunc(depth_.less);
   glDepthMask(GL_TRUE);
   glStencilMask(0xFF);
-  glStencilFunc(GL_ALWAYS, 0, 0xFF);
-  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);  // the shader's value (gl_FragStencilRefARB)
-  resolve_.set("transform", glm::mat4(1.0f));
-  const bool culling = glIsEnabled(GL_CULL_FACE);
-  glDisable(GL_CULL_FACE);
-  quad_.draw();
-  if (culling) glEnable(GL_CULL_FACE);
-  // 2. Each target lit where the frame holds its tag at exactly its depth.
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  const bool twoPasses = hasFeature(f.features, Feature::StencilExport);
+  if (twoPasses) {
+    // 1. The surface's depth where it is the nearest yet, its primitive in the stencil.
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glStencilFunc(GL_ALWAYS, 0, 0xFF);  // the shader's value (gl_FragStencilRefARB)
+    resolve_.set("transform", glm::mat4(1.0f));
+    const bool culling = glIsEnabled(GL_CULL_FACE);
+    glDisable(GL_CULL_FACE);
+    quad_.draw();
+    if (culling) glEnable(GL_CULL_FACE);
+    // 2. Each target lit where the frame holds its tag at exactly its depth.
+    glDepthFunc(GL_EQUAL);
+    glDepthMask(GL_FALSE);
+    glStencilMask(0);
+  }
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glDepthFunc(GL_EQUAL);
-  glDepthMask(GL_FALSE);
-  glStencilMask(0);
-  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   for (int x : targets) {
-    glStencilFunc(GL_EQUAL, x % 255 + 1, 0xFF);
+    glStencilFunc(twoPasses ? GL_EQUAL : GL_ALWAYS, x % 255 + 1, 0xFF);
     drawTargets(p, {x}, Paint::Merged);
   }
   glDepthMask(GL_TRUE);

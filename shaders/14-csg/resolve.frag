@@ -1,5 +1,5 @@
 #version 330 core
-#extension GL_ARB_shader_stencil_export : require
+#extension GL_ARB_shader_stencil_export : enable
 // Lesson 14's merge, its first pass: one full-screen quad that writes the product's surface (the
 // work buffer's depth) into the frame's depth where it is nearer than what the frame holds, and
 // the primitive whose fragment made it (its index modulo 255, + 1) into the frame's stencil. The
@@ -14,5 +14,7 @@ void main() {
   uint primitive = texelFetch(productPrimitive, pixel, 0).r;
   if (primitive == 0u) discard;  // no target's fragment wrote this depth (the entry's near plane)
   gl_FragDepth = texelFetch(productDepth, pixel, 0).r;
+#ifdef GL_ARB_shader_stencil_export  // else the lit pass writes the tag (Csg::mergeIntoFrame)
   gl_FragStencilRefARB = int((primitive - 1u) % 255u + 1u);
+#endif
 }
