@@ -45,7 +45,8 @@ std::string GlFeatures::summary() const {
   auto yn = [](bool b) { return b ? "yes" : "no"; };
   std::string line = std::string("depth_bounds_test=") + yn(depthBoundsTest) +
                      " pipeline_statistics=" + yn(pipelineStatistics) + " clip_control=" + yn(clipControl) +
-                     " khr_debug=" + yn(khrDebug) + " depth_clamp=" + yn(depthClamp);
+                     " khr_debug=" + yn(khrDebug) + " depth_clamp=" + yn(depthClamp) +
+                     " stencil_export=" + yn(stencilExport);
   if (webgl)
     line += std::string(" clip_distance=") + yn(clipDistance) + " timer_query=" + yn(timerQuery) +
             " float_colour=" + yn(floatColour) + " samples_passed=" + yn(samplesPassed) +
@@ -74,6 +75,7 @@ void Context::loadGl(GlProc (*getProcAddress)(const char*)) {
   bool gl43 = f.major > 4 || (f.major == 4 && f.minor >= 3);
   f.depthBoundsTest = GLAD_GL_EXT_depth_bounds_test;
   f.pipelineStatistics = GLAD_GL_ARB_pipeline_statistics_query;
+  f.stencilExport = GLAD_GL_ARB_shader_stencil_export;
   // Core in 4.5, where a driver need not list the extension; glad loads the entry point only
   // for the extension, so load it by name then.
   if (gl45 && !glad_glClipControl)

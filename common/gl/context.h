@@ -26,6 +26,7 @@ struct GlFeatures {
   bool clipControl = false;         // ARB_clip_control (core in 4.5)
   bool khrDebug = false;            // KHR_debug (core in 4.3)
   bool depthClamp = false;          // ARB_depth_clamp (core in 3.2)
+  bool stencilExport = false;       // ARB_shader_stencil_export: a fragment shader writes the stencil value
   // What GL 3.3 core always has and WebGL 2 has only through an extension, or not at all: true
   // on the desktop, detected in the browser (webgl).
   bool webgl = false;              // a WebGL 2 context (the browser build)

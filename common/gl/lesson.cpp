@@ -34,6 +34,7 @@ const char* featureName(Feature f) {
     case Feature::ClipControl: return "ARB_clip_control";
     case Feature::DepthClamp: return "ARB_depth_clamp";
     case Feature::KhrDebug: return "KHR_debug";
+    case Feature::StencilExport: return "ARB_shader_stencil_export";
   }
   return "?";
 }
@@ -45,6 +46,7 @@ bool hasFeature(const GlFeatures& g, Feature f) {
     case Feature::ClipControl: return g.clipControl;
     case Feature::DepthClamp: return g.depthClamp;
     case Feature::KhrDebug: return g.khrDebug;
+    case Feature::StencilExport: return g.stencilExport;
   }
   return false;
 }
@@ -222,7 +224,8 @@ std::string statsJson(const Session& s, const std::vector<double>& frameMs) {
                                   {"pipeline_statistics", f.pipelineStatistics},
                                   {"clip_control", f.clipControl},
                                   {"khr_debug", f.khrDebug},
-                                  {"depth_clamp", f.depthClamp}}}};
+                                  {"depth_clamp", f.depthClamp},
+                                  {"stencil_export", f.stencilExport}}}};
   PassStats total;
   bool haveSamples = true, havePrims = true, haveGpu = true;
   nlohmann::ordered_json passList = nlohmann::ordered_json::array();

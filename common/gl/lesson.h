@@ -46,7 +46,7 @@ struct OptionsChosen {
   bool set(std::string_view name) const;   // given with --set
 };
 
-enum class Feature { DepthBoundsTest, PipelineStatistics, ClipControl, DepthClamp, KhrDebug };
+enum class Feature { DepthBoundsTest, PipelineStatistics, ClipControl, DepthClamp, KhrDebug, StencilExport };
 const char* featureName(Feature);
 bool hasFeature(const GlFeatures&, Feature);
 

@@ -7,7 +7,8 @@
 //     how the batches, the bound on the cycles and the redrawn batches follow from where the
 //     primitives lie);
 //   - a product with a concave primitive is drawn by layered Goldfeather, its layers counted by
-//     one read of the stencil, kept where nearest and merged once;
+//     one read of the stencil, each scissored to where it has pixels, kept where nearest and
+//     merged once (layeredByLayerRects);
 //   - every pass of a product is scissored to the window rectangle its intersected primitives
 //     share, and the work buffer gets the primitive alone (its colour is the pass stepper's).
 // None of this changes a pixel; each saves draws or llvmpipe's per-state-change copies.
@@ -34,7 +35,6 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   const GLenum primitivesOnly[] = {GL_NONE, GL_COLOR_ATTACHMENT1};
   glDrawBuffers(2, primitivesOnly);
-  automatic_ = true;
   glEnable(GL_SCISSOR_TEST);
   for (const CsgProduct& p : sop.products) {
     // A product's surface lies inside each of its intersected primitives: within all their window
@@ -50,13 +50,10 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
       scsUntilUnchanged(f, p, within);
     } else {
       f.count("goldfeather_products");
-      SumOfProducts one;
-      one.products.push_back(p);
-      goldfeather(f, one, true);
+      layeredByLayerRects(f, p, within);
     }
   }
   glDisable(GL_SCISSOR_TEST);
-  automatic_ = false;
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   glDrawBuffers(2, both);
@@ -79,7 +76,7 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
 //     drawn would move nothing again: it is left out of the next cycle;
 //   - a subtracted primitive whose batch never moved the surface is nowhere on it: not merged.
 void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& within) {
-  scsEnter(f, p, false);
+  scsEnter(f, p, true);
   std::vector<int> shown;  // the subtracted primitives on screen (one off screen moves nothing)
   std::vector<Footprint> footprints;
   for (int s : p.subtracted) {
@@ -138,7 +135,7 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
         // Their back faces clear their marks, unless the far plane cuts some of them away.
         const bool clean =
             std::none_of(batches[b].begin(), batches[b].end(), [&](int s) { return reachesPastFar(f, s); });
-        scsSubtract(f, batches[b], queries.empty() ? 0 : queries[b], clean);
+        scsSubtract(f, batches[b], true, queries.empty() ? 0 : queries[b], clean);
         if (!clean) {
           for (std::size_t i = 0; i < n; ++i) {
             if (batchOf[i] != b) continue;
@@ -174,6 +171,40 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
   mergeIntoFrame(f, p, targets);
 }
 
+// Layered Goldfeather on one product with a concave primitive (main.cpp's steps), with these
+// economies:
+//   - the layers are counted by one read of the stencil (readCounts), which also says where each
+//     layer has pixels: its passes are scissored to the rectangle that holds them, and a target
+//     whose window rectangle holds none of them is left out of the layer's passes, as a target
+//     and as a trimmer (it has no fragment on them; a subtracted primitive's parity there would be
+//     0, as the product wants it; an intersected one's rectangle holds the product's, and every
+//     layer's pixels);
+//   - each layer's trimmed surface is kept where it is nearer than the layers before it
+//     (keepNearest), and the product is merged once, from that.
+void Csg::layeredByLayerRects(Frame& f, const CsgProduct& p, const ScissorRect& within) {
+  std::vector<int> targets = p.intersected;
+  targets.insert(targets.end(), p.subtracted.begin(), p.subtracted.end());
+  const bool queries = f.on("queries");
+  LayerCounts counts;
+  const int k = queries ? 255 : targetDepthComplexity(f, p, targets, &counts);
+  // Per target, the layers its rectangle has pixels of.
+  std::vector<int> deepest;
+  for (int x : targets) deepest.push_back(queries ? 255 : counts.largestWithin(footprintOf(f, x).rect));
+  clearNearest();
+  for (int layer = 0; layer < k; ++layer) {
+    std::vector<int> present;
+    for (std::size_t i = 0; i < targets.size(); ++i)
+      if (deepest[i] > layer) present.push_back(targets[i]);
+    if (!queries) {
+      const ScissorRect r = counts.layer(layer);
+      glScissor(r.x, r.y, r.width, r.height);
+    }
+    if (!trimLayer(f, p, present, present, layer, true)) break;
+  }
+  glScissor(within.x, within.y, within.width, within.height);
+  mergeIntoFrame(f, p, targets, true);
+}
+
 // The automatic method's step 3 of a layer: the work buffer's surface into nearest_, where it is
 // nearer than the layers before it.
 void Csg::keepNearest(Frame& f) {
@@ -205,14 +236,40 @@ void Csg::clearNearest() {
   glClear(GL_DEPTH_BUFFER_BIT);
 }
 
-// The largest stencil count within the scissor box (the product's rectangle), read back once.
-int Csg::largestCount() const {
+// The stencil's counts within the scissor box (the product's rectangle), read back once.
+Csg::LayerCounts Csg::readCounts() {
+  LayerCounts c;
   GLint box[4] = {0, 0, 0, 0};
   glGetIntegerv(GL_SCISSOR_BOX, box);
-  std::vector<GLubyte> counts(static_cast<std::size_t>(box[2]) * static_cast<std::size_t>(box[3]), 0);
+  c.box = {box[0], box[1], box[2], box[3]};
+  c.counts.assign(static_cast<std::size_t>(box[2]) * static_cast<std::size_t>(box[3]), 0);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(box[0], box[1], box[2], box[3], GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, counts.data());
-  return counts.empty() ? 0 : *std::max_element(counts.begin(), counts.end());
+  glReadPixels(box[0], box[1], box[2], box[3], GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, c.counts.data());
+  c.largest = c.counts.empty() ? 0 : *std::max_element(c.counts.begin(), c.counts.end());
+  return c;
+}
+
+ScissorRect Csg::LayerCounts::layer(int k) const {
+  glm::ivec2 low(std::numeric_limits<int>::max()), high(-1);
+  for (int y = 0; y < box.height; ++y)
+    for (int x = 0; x < box.width; ++x)
+      if (at(x, y) > k) low = glm::min(low, glm::ivec2(x, y)), high = glm::max(high, glm::ivec2(x, y));
+  if (high.x < 0) return {};
+  return {box.x + low.x, box.y + low.y, high.x - low.x + 1, high.y - low.y + 1};
+}
+
+int Csg::LayerCounts::largestWithin(const ScissorRect& r) const {
+  const ScissorRect within = common(r, box);
+  int largestThere = 0;
+  for (int y = within.y - box.y; y < within.y - box.y + within.height; ++y)
+    for (int x = within.x - box.x; x < within.x - box.x + within.width; ++x)
+      largestThere = std::max(largestThere, at(x, y));
+  return largestThere;
+}
+
+int Csg::LayerCounts::at(int x, int y) const {
+  const std::size_t row = static_cast<std::size_t>(y) * static_cast<std::size_t>(box.width);
+  return counts[row + static_cast<std::size_t>(x)];
 }
 
 // Primitive i's footprint this frame: its object box at its model, as a world box, the world

@@ -48,20 +48,31 @@ class Csg final : public Lesson {
 
  private:
   // Each defined with its comment.
+  // The stencil's counts of target faces within a product's rectangle, read back once
+  // (automatic.cpp, readCounts).
+  struct LayerCounts {
+    ScissorRect box;              // the rectangle read (the scissor box)
+    std::vector<GLubyte> counts;  // per pixel, rows from the bottom
+    int largest = 0;
+    ScissorRect layer(int k) const;  // the rectangle of the pixels with a k-th fragment (count > k)
+    int largestWithin(const ScissorRect& r) const;
+    int at(int x, int y) const;  // x, y from the box's corner
+  };
   // ---- main.cpp: the algorithms ------------------------------------------------------------------
   void keepSurface(Frame& f, int x, GLenum faces, int s, bool wantInside, GLuint kept, bool trim);
   void twoSolidsMethod(Frame& f, const CsgScene&, int op);
   void goldfeather(Frame& f, const SumOfProducts& sop, bool layered);
   bool trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targets,
-                 const std::vector<int>& trimmers, int layer);
+                 const std::vector<int>& trimmers, int layer, bool automatic = false);
   void mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets, bool fromNearest = false);
   void keepNearest(Frame& f);
   void clearNearest();
-  int largestCount() const;
-  int targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<int>& targets);
+  int targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<int>& targets,
+                            LayerCounts* counts = nullptr);
   void scs(Frame& f, const SumOfProducts& sop);
-  void scsEnter(Frame& f, const CsgProduct& p, bool clip = true);
-  void scsSubtract(Frame& f, const std::vector<int>& batch, GLuint query = 0, bool clean = false);
+  void scsEnter(Frame& f, const CsgProduct& p, bool automatic = false);
+  void scsSubtract(Frame& f, const std::vector<int>& batch, bool automatic = false, GLuint query = 0,
+                   bool clean = false);
   BoundingSphere worldSphereOf(int i) const;
   bool reachesPastFar(const Frame& f, int i) const;
   void clipByIntersection(Frame& f, const CsgProduct& p);
@@ -69,6 +80,8 @@ class Csg final : public Lesson {
   // ---- automatic.cpp: per product the method that is right for it, with OpenCSG's economies ------
   void automatic(Frame& f, const SumOfProducts& sop);
   void scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& within);
+  void layeredByLayerRects(Frame& f, const CsgProduct& p, const ScissorRect& within);
+  static LayerCounts readCounts();
   struct Footprint {
     Aabb box;
     BoundingSphere sphere;
@@ -83,12 +96,16 @@ class Csg final : public Lesson {
   void workBuffer(glm::ivec2 size);
   CsgTree prepare(const CsgScene& scene, double time);
   static bool subtracted(const CsgProduct& p, int primitive);
-  enum class Paint { Depth, Selected, Merged };
+  // Depth: white, for the depth and stencil alone; Selected: lit, the primitive written beside the
+  // depth; Primitive: the primitive alone (the automatic method); Merged: lit where the frame holds
+  // the fragment's primitive and depth.
+  enum class Paint { Depth, Selected, Primitive, Merged };
   void drawTargets(const CsgProduct& p, const std::vector<int>& targets, Paint paint);
   void setLighting(const Program& p, const Frame& f) const;
   void drawDepth(int i);
   void drawShaded(int i);
   void drawSelected(int i);
+  void drawPrimitive(int i);
   void drawMerged(int i);
   void drawWithMergeShader(int i, bool merging);  // drawSelected and drawMerged: the merge shader either way
   void mergeInputs();
@@ -101,10 +118,7 @@ class Csg final : public Lesson {
   void checkAgainstRayCast(Frame& f, const CsgScene& scene, const CsgTree& tree, int method) const;
 
   const Scene* fromFile_;  // --scene's file, or nullptr for the lesson's own scenes
-  Program light_, depthOnly_, merge_, select_, keep_, flat_;
-  // The automatic method's economies on: drawSelected writes the primitive alone; a layered
-  // product's layers are kept in nearest_ and merged once; the depth complexity is read back.
-  bool automatic_ = false;
+  Program light_, depthOnly_, merge_, select_, keep_, resolve_, flat_;
   Mesh quadMesh_;
   GpuMesh quad_;
   std::vector<std::unique_ptr<GpuMesh>> meshes_;

@@ -18,6 +18,7 @@ Csg::Csg(const Scene* fromFile)
       merge_("14-csg/merge.vert", "14-csg/merge.frag"),
       select_("14-csg/merge.vert", "14-csg/select.frag"),
       keep_("common/flat.vert", "14-csg/keep.frag"),
+      resolve_("common/flat.vert", "14-csg/resolve.frag"),
       flat_("common/flat.vert", "common/flat.frag"),
       quadMesh_(makeScreenQuad()),
       quad_(quadMesh_) {
@@ -140,6 +141,8 @@ void Csg::drawTargets(const CsgProduct& p, const std::vector<int>& targets, Pain
       drawMerged(x);
     else if (paint == Paint::Selected)
       drawSelected(x);
+    else if (paint == Paint::Primitive)
+      drawPrimitive(x);
     else
       drawDepth(x);
   }
@@ -167,16 +170,16 @@ void Csg::drawShaded(int i) {
 }
 // Into the work buffer: lit, every fragment kept (the depth and stencil tests choose), its
 // primitive written beside its depth.
-// (The automatic method writes the primitive alone.)
 void Csg::drawSelected(int i) {
-  if (automatic_) {
-    select_.set("primitive", i + 1);
-    select_.set("model", models_[static_cast<std::size_t>(i)]);
-    frontFace(i);
-    meshes_[static_cast<std::size_t>(i)]->draw();
-    return;
-  }
   drawWithMergeShader(i, false);
+}
+// The same, the primitive alone (the automatic method: the work buffer's colour is the pass
+// stepper's, and this method paints none).
+void Csg::drawPrimitive(int i) {
+  select_.set("primitive", i + 1);
+  select_.set("model", models_[static_cast<std::size_t>(i)]);
+  frontFace(i);
+  meshes_[static_cast<std::size_t>(i)]->draw();
 }
 // Into the frame: lit where the work buffer holds this primitive at exactly this depth.
 void Csg::drawMerged(int i) {
@@ -192,7 +195,7 @@ void Csg::drawWithMergeShader(int i, bool merging) {
 }
 // The merge (and keep) shader's inputs: the work buffer's depth on texture unit 0, its primitives on 1.
 void Csg::mergeInputs() {
-  for (Program* p : {&merge_, &keep_}) {
+  for (Program* p : {&merge_, &keep_, &resolve_}) {
     p->set("productDepth", 0);
     p->set("productPrimitive", 1);
   }

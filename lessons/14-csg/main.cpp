@@ -208,10 +208,8 @@ void Csg::goldfeather(Frame& f, const SumOfProducts& sop, bool layered) {
     targets.insert(targets.end(), product.subtracted.begin(), product.subtracted.end());
     if (layered) {
       const int k = f.on("queries") ? 255 : targetDepthComplexity(f, product, targets);
-      if (automatic_) clearNearest();  // the automatic method: layers kept where nearest, merged once
       for (int layer = 0; layer < k; ++layer)
         if (!trimLayer(f, product, targets, targets, layer)) break;
-      if (automatic_) mergeIntoFrame(f, product, targets, true);
     } else {
       for (int x : targets) {
         std::vector<int> others;
@@ -232,11 +230,12 @@ void Csg::goldfeather(Frame& f, const SumOfProducts& sop, bool layered) {
   glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer());
 }
 
-// Layer `layer` of the targets' faces, trimmed by `trimmers` and merged into the frame. Returns
-// false when an occlusion query found the layer empty (with the queries option): no later layer
-// has a fragment either.
+// Layer `layer` of the targets' faces, trimmed by `trimmers` and merged into the frame (with
+// `automatic`, the automatic method's: the work buffer gets the primitive alone, and the layer is
+// kept where nearest, to be merged once). Returns false when an occlusion query found the layer
+// empty (with the queries option): no later layer has a fragment either.
 bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targets,
-               const std::vector<int>& trimmers, int layer) {
+                    const std::vector<int>& trimmers, int layer, bool automatic) {
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glStencilMask(0xFF);
@@ -257,7 +256,7 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
       GLuint query = 0;
       glGenQueries(1, &query);
       glBeginQuery(GL_SAMPLES_PASSED, query);
-      drawTargets(p, targets, Paint::Selected);
+      drawTargets(p, targets, automatic ? Paint::Primitive : Paint::Selected);
       glEndQuery(GL_SAMPLES_PASSED);
       GLuint64 n = 0;
       glGetQueryObjectui64v(query, GL_QUERY_RESULT, &n);
@@ -265,7 +264,7 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
       selected = n;
     });
   } else {
-    drawTargets(p, targets, Paint::Selected);
+    drawTargets(p, targets, automatic ? Paint::Primitive : Paint::Selected);
   }
   f.count("select_passes");
   f.pass("select");
@@ -318,34 +317,60 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
 
   // 3. Merge: the targets drawn into the frame where they are the trimmed surface (or, the
   // automatic method, the surface kept where it is the nearest layer's yet).
-  if (automatic_)
+  if (automatic)
     keepNearest(f);
   else
     mergeIntoFrame(f, p, targets);
   return true;
 }
 
-// Merge: the targets drawn into the frame where they are the trimmed surface, the nearest of all
-// products winning; the stencil records the primitive (its index modulo 255, + 1). The shader
-// keeps a fragment only where the work buffer recorded its primitive and its depth exactly: the
-// same triangle drawn again lands on the same depth (gl_Position is invariant), and another
-// target's face crossing the surface there, however close in depth, is not the surface (OpenCSG
-// records the primitive's ID the same way).
+// Merge: the product's surface into the frame where it is nearer than the other products' (the
+// depth test keeps the nearest of all), then its targets drawn lit there. First a full-screen pass
+// (14-csg/resolve.frag) writes the work buffer's depth into the frame's depth where it is nearer,
+// and the primitive recorded beside it into the frame's stencil (its index modulo 255, + 1: the
+// oracle reads it). Then each target is drawn with the depth test EQUAL and the stencil test EQUAL
+// to its own tag, writing colour only: the same triangle drawn again lands on the same depth
+// (gl_Position is invariant), and another target's face crossing the surface there, however close
+// in depth, carries another tag (OpenCSG records the primitive's ID the same way); the shader
+// still compares the recorded primitive, for two primitives 255 apart. Nothing is written but
+// colour, so the tests run before the lighting (early_fragment_tests in 14-csg/merge.frag).
+// Without stencil export (ARB_shader_stencil_export; WebGL 2) the merge is one pass: each target
+// drawn with its depth and tag written where the shader finds it is the surface (no early tests
+// then: the shader decides before the writes). Both give the same picture.
 void Csg::mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets, bool fromNearest) {
   glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer());
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glDepthFunc(depth_.less);
-  glDepthMask(GL_TRUE);
-  glStencilMask(0xFF);
-  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   glActiveTexture(GL_TEXTURE1);
   glBindTexture(GL_TEXTURE_2D, fromNearest ? nearestPrimitive_ : workPrimitive_);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, fromNearest ? nearestDepth_ : workDepth_);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_STENCIL_TEST);
+  glDepthFunc(depth_.less);
+  glDepthMask(GL_TRUE);
+  glStencilMask(0xFF);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  const bool twoPasses = hasFeature(f.features, Feature::StencilExport);
+  if (twoPasses) {
+    // 1. The surface's depth where it is the nearest yet, its primitive in the stencil.
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glStencilFunc(GL_ALWAYS, 0, 0xFF);  // the shader's value (gl_FragStencilRefARB)
+    resolve_.set("transform", glm::mat4(1.0f));
+    const bool culling = glIsEnabled(GL_CULL_FACE);
+    glDisable(GL_CULL_FACE);
+    quad_.draw();
+    if (culling) glEnable(GL_CULL_FACE);
+    // 2. Each target lit where the frame holds its tag at exactly its depth.
+    glDepthFunc(GL_EQUAL);
+    glDepthMask(GL_FALSE);
+    glStencilMask(0);
+  }
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   for (int x : targets) {
-    glStencilFunc(GL_ALWAYS, x % 255 + 1, 0xFF);  // the primitive, modulo 255, for the oracle
+    glStencilFunc(twoPasses ? GL_EQUAL : GL_ALWAYS, x % 255 + 1, 0xFF);
     drawTargets(p, {x}, Paint::Merged);
   }
+  glDepthMask(GL_TRUE);
+  glStencilMask(0xFF);
   glBindTexture(GL_TEXTURE_2D, 0);
   glActiveTexture(GL_TEXTURE1);
   glBindTexture(GL_TEXTURE_2D, 0);
@@ -357,7 +382,8 @@ void Csg::mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& 
 // Lesson 13's count on the targets' faces (all the product's, layered; one concave target's, method 1): INCR on every fragment, the depth test
 // off; the largest count, found by bisection with stencil LESS and occlusion queries, is the
 // number of layers the layered method needs.
-int Csg::targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<int>& targets) {
+int Csg::targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<int>& targets,
+                               LayerCounts* counts) {
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glStencilMask(0xFF);
@@ -370,7 +396,10 @@ int Csg::targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<
   drawTargets(p, targets, Paint::Depth);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   int low = 0, high = 255;  // the largest count lies in [low, high]
-  if (automatic_) low = high = largestCount();  // read once, for the bisection's 8 queries
+  if (counts) {  // read once, for the bisection's 8 queries
+    *counts = readCounts();
+    low = high = counts->largest;
+  }
   f.ownOcclusionQueries([&] {
     GLuint query = 0;
     glGenQueries(1, &query);
@@ -428,9 +457,10 @@ void Csg::scs(Frame& f, const SumOfProducts& sop) {
 
 // SCS's step 1, in the work buffer: the intersected primitives' front faces, the furthest kept,
 // clipped to where the ray is inside them all. One convex primitive's front face lies inside it,
-// and the clip after the subtractions sends what it does not cover to the far plane: without
-// `clip` (the automatic method's economy) a single one is not clipped here.
-void Csg::scsEnter(Frame& f, const CsgProduct& p, bool clip) {
+// and the clip after the subtractions sends what it does not cover to the far plane: with
+// `automatic` (its economies) a single one is not clipped here, and the work buffer gets the
+// primitive alone (here and in scsSubtract).
+void Csg::scsEnter(Frame& f, const CsgProduct& p, bool automatic) {
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   // The work buffer's colour follows the surface as it moves (no part of the method: the
   // pass stepper's picture of it).
@@ -441,6 +471,10 @@ void Csg::scsEnter(Frame& f, const CsgProduct& p, bool clip) {
   glClearDepth(nearest());  // the furthest front face wins: start at the near plane
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   glClearDepth(depth_.farthest);
+  // No primitive yet: where no front face is drawn the depth stays at the near plane, and the
+  // merge must not take it for a surface.
+  const GLuint none[4] = {0, 0, 0, 0};
+  glClearBufferuiv(GL_COLOR, 1, none);
   // 1. The intersected primitives' front faces, the furthest kept: where the ray has entered
   // them all, if it is inside them all there.
   glDepthFunc(further());
@@ -448,8 +482,8 @@ void Csg::scsEnter(Frame& f, const CsgProduct& p, bool clip) {
   glStencilFunc(GL_ALWAYS, 0, 0);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glCullFace(GL_BACK);
-  for (int a : p.intersected) drawSelected(a);
-  if (clip || p.intersected.size() > 1) clipByIntersection(f, p);
+  for (int a : p.intersected) automatic ? drawPrimitive(a) : drawSelected(a);
+  if (!automatic || p.intersected.size() > 1) clipByIntersection(f, p);
   f.pass("intersect");
 }
 
@@ -463,7 +497,7 @@ void Csg::scsEnter(Frame& f, const CsgProduct& p, bool clip) {
 // faces marked (a closed convex solid whose back faces the far plane does not cut: a front face
 // beyond the near plane has its back face beyond it too), and each mark they meet goes back to
 // 0; the next subtraction needs no clear.
-void Csg::scsSubtract(Frame& f, const std::vector<int>& batch, GLuint query, bool clean) {
+void Csg::scsSubtract(Frame& f, const std::vector<int>& batch, bool automatic, GLuint query, bool clean) {
   glStencilMask(0xFF);
   if (!clean) glClear(GL_STENCIL_BUFFER_BIT);
   glDepthFunc(furtherOrEqual());  // s's front face behind the surface, or on it: not inside s
@@ -483,7 +517,7 @@ void Csg::scsSubtract(Frame& f, const std::vector<int>& batch, GLuint query, boo
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glCullFace(GL_FRONT);
   if (query) glBeginQuery(GL_SAMPLES_PASSED, query);
-  for (int s : batch) drawSelected(s);
+  for (int s : batch) automatic ? drawPrimitive(s) : drawSelected(s);
   if (query) glEndQuery(GL_SAMPLES_PASSED);
   f.count("subtraction_passes", 2);
 }

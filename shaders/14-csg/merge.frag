@@ -1,11 +1,21 @@
 #version 330 core
+#extension GL_ARB_shader_image_load_store : enable
 // Lesson 14's surfaces, lit like common/light.frag with the side the eye sees lit. Two uses:
 // selecting (merging 0): into the work buffer, every fragment kept, its primitive written beside
 // its depth, so the work buffer records which primitive's fragment the trimming keeps at each
 // pixel; merging (1): a target drawn again into the frame, kept only where it is the product's
 // surface: the work buffer holds its primitive at exactly its depth (the same triangle drawn
-// again lands on the same depth: gl_Position is invariant). The depth test against the frame
-// keeps the nearest of every product's surfaces: their union.
+// again lands on the same depth: gl_Position is invariant). The merge's first pass has put that
+// depth and primitive into the frame (14-csg/resolve.frag), and the depth and stencil tests
+// (EQUAL) pass only there: the comparisons here settle what the tests cannot (two primitives
+// whose tags, modulo 255, are the same; two faces in one step of a 24-bit depth).
+// The tests run before the shader: a merge writes only colour, and the lighting then runs only on
+// the fragments that pass (a shader that may discard otherwise waits for the shader to test).
+// Without stencil export the merge writes each target's tag itself, so the shader must decide
+// first (and without early_fragment_tests, as in WebGL 2, the tests simply wait).
+#if defined(GL_ARB_shader_image_load_store) && defined(GL_ARB_shader_stencil_export)
+layout(early_fragment_tests) in;
+#endif
 in vec3 worldPosition;
 in vec3 worldNormal;
 flat in int fragmentPrimitive;  // this primitive's index + 1 (merge.vert)
