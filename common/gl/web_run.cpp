@@ -164,7 +164,16 @@ void tick() {
   guarded([] { renderAndShow(run->playedFromTime + (stencil_page_now() - run->playedFrom) / 1000.0); });
 }
 
-int runWeb(const LessonInfo& info, const LessonFactory& make, int argc, char** argv) {
+// What the browser cannot do of what the lesson does on the desktop, said in the page's log.
+void sayWhatIsMissing(bool sceneLesson) {
+  const std::string id = run->info.id;
+  std::cerr << id << ": not in the browser: --stats and its counts (WebGL 2's occlusion queries only say"
+            << " whether any sample passed), --depth-out\n";
+  if (sceneLesson)
+    std::cerr << id << ": not in the browser yet: scene files (--scene); the lesson draws its built-in scene\n";
+}
+
+int runWeb(const LessonInfo& info, const LessonFactory& make, int argc, char** argv, bool sceneLesson) {
   run = std::make_unique<WebRun>();
   run->info = info;
   run->make = make;
@@ -173,6 +182,7 @@ int runWeb(const LessonInfo& info, const LessonFactory& make, int argc, char** a
     run->session = std::make_unique<Session>(run->info, run->make, run->commandLine, Backend::Web);
     const GlFeatures& f = run->session->context->features();
     std::cerr << run->info.id << ": " << f.renderer << ", " << f.version << "; " << f.summary() << "\n";
+    sayWhatIsMissing(sceneLesson);
     renderAndShow(run->commandLine.time);
     stencil_page_ready(lessonJson(*run).c_str());
   });
@@ -182,12 +192,12 @@ int runWeb(const LessonInfo& info, const LessonFactory& make, int argc, char** a
 }  // namespace
 
 int runLesson(const LessonInfo& info, const LessonFactory& factory, int argc, char** argv) {
-  return runWeb(info, factory, argc, argv);
+  return runWeb(info, factory, argc, argv, false);
 }
 
 // Scene files in the browser are not read yet: the lesson draws its built-in scene.
 int runSceneLesson(const LessonInfo& info, const SceneLessonFactory& factory, int argc, char** argv) {
-  return runWeb(info, [factory] { return factory(nullptr); }, argc, argv);
+  return runWeb(info, [factory] { return factory(nullptr); }, argc, argv, true);
 }
 
 }  // namespace stencil
