@@ -18,6 +18,7 @@ namespace stencil {
 namespace {
 
 EMSCRIPTEN_WEBGL_CONTEXT_HANDLE current = 0;
+bool clipDistanceExtension = false;  // the current context's WEBGL_clip_cull_distance
 
 class WebContext final : public Context {
  public:
@@ -74,10 +75,23 @@ void Context::detectWebGl() {
   f.stencilReadPixels = false;
   f.depthClamp = enable("EXT_depth_clamp");
   f.clipControl = enable("EXT_clip_control");
-  f.clipDistance = enable("WEBGL_clip_cull_distance");
+  f.clipDistance = clipDistanceExtension = enable("WEBGL_clip_cull_distance");
   f.timerQuery = enable("EXT_disjoint_timer_query_webgl2");
   const bool colourBufferFloat = enable("EXT_color_buffer_float");
   f.floatColour = colourBufferFloat && enable("EXT_float_blend");
+}
+
+bool webClipDistance() {
+  return clipDistanceExtension;
+}
+
+#undef glEnable
+#undef glDisable
+void webEnable(GLenum cap) {
+  if (clipDistanceExtension || cap < GL_CLIP_DISTANCE0 || cap > GL_CLIP_DISTANCE0 + 7) glEnable(cap);
+}
+void webDisable(GLenum cap) {
+  if (clipDistanceExtension || cap < GL_CLIP_DISTANCE0 || cap > GL_CLIP_DISTANCE0 + 7) glDisable(cap);
 }
 
 std::unique_ptr<Context> createWebContext(int width, int height) {

@@ -4,6 +4,8 @@
 // Its stencil bits are verified, never assumed from a pixel format, so every backend gives the
 // same stencil buffer.
 #pragma once
+#include <cstdint>
+#include <glm/glm.hpp>
 #include <vector>
 
 #include "gl/gl.h"
@@ -18,7 +20,10 @@ Image readStencilPixels(GLuint framebuffer, int width, int height);
 // Reads a framebuffer's depth as window depths in [0, 1] (any depth format), width x height
 // floats, top row first.
 std::vector<float> readDepthPixels(GLuint framebuffer, int width, int height);
-// The three readers bind `framebuffer` for reading and set GL_PACK_ALIGNMENT, and leave both so.
+// Pixels per stencil value (256 counts) of a framebuffer's stencil: what full-screen queries
+// (GL_SAMPLES_PASSED under GL_EQUAL) count on the desktop, for the browser, whose queries are boolean.
+std::vector<std::uint64_t> stencilHistogram(GLuint framebuffer, glm::ivec2 size);
+// The readers bind `framebuffer` for reading and set GL_PACK_ALIGNMENT, and leave both so.
 
 // The depth buffer's format. Fixed24: GL_DEPTH24_STENCIL8, steps of 2^-24 over [0, 1], every
 // lesson's default. Float32: GL_DEPTH32F_STENCIL8 (core since 3.0), a float per pixel, whose

@@ -135,11 +135,7 @@ void PassRecorder::pass(std::string_view name, std::string_view detail) {
                           .framebuffer = source,
                           .colour = readColourPixels(source, w, h),
                           .stencil = readStencilPixels(source, w, h),
-#ifdef __EMSCRIPTEN__
-                          .depth = {}});  // WebGL 2 cannot read depth back: the browser's snapshots have none
-#else
                           .depth = readDepthPixels(source, w, h)});
-#endif
     glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read));
     glPixelStorei(GL_PACK_ALIGNMENT, packAlignment);
     checkGlErrors("while reading the snapshot of pass '" + current_.name + "'");

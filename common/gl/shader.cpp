@@ -1,5 +1,6 @@
 #include "gl/shader.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <glm/gtc/type_ptr.hpp>
@@ -23,15 +24,19 @@ std::string readText(const std::filesystem::path& path) {
 
 // The uniforms' initial values that the browser's GLSL cannot declare (glslForWebGl): compile adds
 // each stage's, the Program sets them after linking.
-GLuint compile(GLenum stage, const std::string& relative, std::vector<UniformDefault>& defaults) {
+// clipPlanes: in, the clip planes the vertex shader wrote as an output (the fragment shader's
+// discard, without WEBGL_clip_cull_distance); out, for a vertex shader, how many it writes so.
+GLuint compile(GLenum stage, const std::string& relative, std::vector<UniformDefault>& defaults, int& clipPlanes) {
   const std::filesystem::path path = findShader(relative);
 #ifdef __EMSCRIPTEN__
-  WebGlShader es = glslForWebGl(readText(path));
+  WebGlShader es = glslForWebGl(readText(path), webClipDistance(), stage == GL_FRAGMENT_SHADER ? clipPlanes : 0);
   const std::string source = std::move(es.source);
   defaults.insert(defaults.end(), es.defaults.begin(), es.defaults.end());
+  if (stage == GL_VERTEX_SHADER) clipPlanes = es.clipPlanes;
 #else
   const std::string source = readText(path);
   (void)defaults;
+  (void)clipPlanes;
 #endif
   const char* text = source.c_str();
   GLuint shader = glCreateShader(stage);
@@ -72,7 +77,7 @@ std::filesystem::path findShader(const std::string& relative) {
   throw UsageError("shader '" + relative + "' not found; tried: " + tried);
 }
 
-WebGlShader glslForWebGl(const std::string& source) {
+WebGlShader glslForWebGl(const std::string& source, bool clipDistance, int clipPlanesIn) {
   static const std::string desktop = "#version 330 core";
   if (source.compare(0, desktop.size(), desktop) != 0) return {source, {}};
   const std::size_t lineEnd = source.find('\n');
@@ -80,18 +85,37 @@ WebGlShader glslForWebGl(const std::string& source) {
     return {source, {}};
   WebGlShader out;
   out.source = "#version 300 es\n";
-  if (source.find("gl_ClipDistance") != std::string::npos)
-    out.source += "#extension GL_ANGLE_clip_cull_distance : enable\n";
-  out.source += "precision highp float;\nprecision highp int;\nprecision highp sampler2D;\n#line 2\n";
+  const bool writesClip = source.find("gl_ClipDistance") != std::string::npos;
+  if (writesClip && clipDistance) out.source += "#extension GL_ANGLE_clip_cull_distance : enable\n";
+  out.source += "precision highp float;\nprecision highp int;\nprecision highp sampler2D;\n";
+  for (const char* sampler : {"isampler2D", "usampler2D"})  // GLSL ES gives these no default precision
+    if (std::regex_search(source, std::regex(std::string("\\b") + sampler + "\\b")))
+      out.source += std::string("precision highp ") + sampler + ";\n";
+  std::string body = source.substr(lineEnd + 1);
+  if (writesClip && !clipDistance) {  // the planes written become an output the fragment shader reads
+    static const std::regex index(R"(gl_ClipDistance\s*\[\s*(\d+)\s*\])");
+    for (auto it = std::sregex_iterator(body.begin(), body.end(), index); it != std::sregex_iterator(); ++it)
+      out.clipPlanes = std::max(out.clipPlanes, std::stoi((*it)[1].str()) + 1);
+    body = std::regex_replace(body, std::regex(R"(\bgl_ClipDistance\b)"), "stencil_clipDistance");
+    out.source += "out float stencil_clipDistance[" + std::to_string(out.clipPlanes) + "];\n";
+  }
+  if (clipPlanesIn > 0) out.source += "in float stencil_clipDistance[" + std::to_string(clipPlanesIn) + "];\n";
+  out.source += "#line 2\n";
   // Line by line, so the line numbers stay; an initialiser is cut from its line.
   static const std::regex initialised(R"(^(\s*uniform\s+(float|int)\s+(\w+))\s*=\s*([-+0-9.eE]+)\s*;(.*)$)");
-  std::istringstream lines(source.substr(lineEnd + 1));
+  static const std::regex mainOpens(R"(^(\s*void\s+main\s*\(\s*(void)?\s*\)\s*\{)(.*)$)");
+  std::istringstream lines(body);
   std::string line;
   while (std::getline(lines, line)) {
     std::smatch m;
     if (std::regex_match(line, m, initialised)) {
       out.defaults.push_back({m[3].str(), m[2].str() == "int", std::strtod(m[4].str().c_str(), nullptr)});
       line = m[1].str() + ";" + m[5].str();
+    } else if (clipPlanesIn > 0 && std::regex_match(line, m, mainOpens)) {
+      std::string clipped;
+      for (int i = 0; i < clipPlanesIn; ++i)
+        clipped += (i ? " || " : "") + std::string("stencil_clipDistance[") + std::to_string(i) + "] < 0.0";
+      line = m[1].str() + " if (" + clipped + ") discard;" + m[3].str();
     }
     out.source += line + "\n";
   }
@@ -121,10 +145,11 @@ std::string formatCompileLog(const std::string& file, const std::string& log) {
 
 Program::Program(const std::string& vertexFile, const std::string& fragmentFile) {
   std::vector<UniformDefault> defaults;
-  GLuint vs = compile(GL_VERTEX_SHADER, vertexFile, defaults);
+  int clipPlanes = 0;
+  GLuint vs = compile(GL_VERTEX_SHADER, vertexFile, defaults, clipPlanes);
   GLuint fs = 0;
   try {
-    fs = compile(GL_FRAGMENT_SHADER, fragmentFile, defaults);
+    fs = compile(GL_FRAGMENT_SHADER, fragmentFile, defaults, clipPlanes);
   } catch (...) {
     glDeleteShader(vs);
     throw;

@@ -56,11 +56,19 @@ struct UniformDefault {
   double value = 0;
   bool operator==(const UniformDefault&) const = default;
 };
+//
+// Where the browser lacks WEBGL_clip_cull_distance (clipDistance false), a vertex shader's
+// gl_ClipDistance[i] becomes an output, stencil_clipDistance[i] (clipPlanes: how many), and its
+// program's fragment shader (clipPlanesIn: that count) discards a fragment where any of them is
+// below 0, on main's first line: the plane clips by pixel centre instead of by triangle. It clips
+// whether or not GL_CLIP_DISTANCEi is enabled, as Mesa's llvmpipe does: the lessons use a shader
+// that writes clip distances only while its planes are enabled.
 struct WebGlShader {
   std::string source;
   std::vector<UniformDefault> defaults;
+  int clipPlanes = 0;
 };
-WebGlShader glslForWebGl(const std::string& source);
+WebGlShader glslForWebGl(const std::string& source, bool clipDistance = true, int clipPlanesIn = 0);
 
 // Turns a driver's info log into one line, "file:line: message (and N more)", from its
 // first message. Drivers write "0:12(5): error: ..." (Mesa), "0(12) : error ..." (NVIDIA) or

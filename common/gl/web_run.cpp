@@ -2,8 +2,8 @@
 // turns the page's URL into the lesson's command line (--variant, --time, --size, --set), and this
 // file makes the session on the page's canvas, shows each frame there, and answers the page's
 // calls: play, pause, a frame at a time, a variant, an option, a view (colour, the stencil as the
-// window's ramp, in grey or as bit planes), a pass to stop after (the pass stepper), and the
-// snapshot the tests read.
+// window's ramp, in grey or as bit planes, the depth as the window shows it), a pass to stop after
+// (the pass stepper), and the snapshot the tests read.
 // A bad setting is one line on the page, as on the command line, and nothing is drawn.
 #ifdef __EMSCRIPTEN__
 #include <emscripten/emscripten.h>
@@ -41,7 +41,7 @@ struct WebRun {
   double time = 0;           // the frame's time, seconds
   double playedFrom = 0;     // performance.now() when play began, ms
   double playedFromTime = 0;  // the frame's time then
-  int view = 0;               // kViewNames: colour, stencil, grey, bits (depth is not in the browser)
+  int view = 0;               // colour, stencil, grey, bits, depth (lesson.js's views)
   std::optional<std::size_t> pass;  // show the frame as it was after this pass; none: the whole frame
   GLuint pictureTexture = 0, pictureFbo = 0;
 };
@@ -95,6 +95,12 @@ void showPicture(const Image& picture, int canvasWidth, int canvasHeight) {
                     GL_NEAREST);
 }
 
+// The depth as the window's depth view shows it (read by drawing it, framebuffer.cpp).
+Image depthViewPicture(const std::vector<float>& depth) {
+  const Session& s = *run->session;
+  return depthPicture(depth, s.framebuffer->width(), s.framebuffer->height(), s.projection, s.reversedDepth);
+}
+
 // The stencil as the view shows it.
 Image stencilViewPicture(const Image& stencil, int view) {
   if (view == 3) return stencilBitPlanes(stencil);
@@ -121,7 +127,12 @@ void renderAndShow(double time) {
   const int w = s.framebuffer->width(), h = s.framebuffer->height();
   const Snapshot* snapshot = run->pass && !s.recorder->snapshots().empty() ? &s.recorder->snapshots().front() : nullptr;
   if (snapshot)
-    showPicture(run->view == 0 ? snapshot->colour : stencilViewPicture(snapshot->stencil, run->view), w, h);
+    showPicture(run->view == 0   ? snapshot->colour
+                : run->view == 4 ? depthViewPicture(snapshot->depth)
+                                 : stencilViewPicture(snapshot->stencil, run->view),
+                w, h);
+  else if (run->view == 4)
+    showPicture(depthViewPicture(s.framebuffer->readDepth()), w, h);
   else if (run->view != 0)
     showPicture(stencilViewPicture(s.framebuffer->readStencil(), run->view), w, h);
   else {
@@ -153,7 +164,16 @@ void tick() {
   guarded([] { renderAndShow(run->playedFromTime + (stencil_page_now() - run->playedFrom) / 1000.0); });
 }
 
-int runWeb(const LessonInfo& info, const LessonFactory& make, int argc, char** argv) {
+// What the browser cannot do of what the lesson does on the desktop, said in the page's log.
+void sayWhatIsMissing(bool sceneLesson) {
+  const std::string id = run->info.id;
+  std::cerr << id << ": not in the browser: --stats and its counts (WebGL 2's occlusion queries only say"
+            << " whether any sample passed), --depth-out\n";
+  if (sceneLesson)
+    std::cerr << id << ": not in the browser yet: scene files (--scene); the lesson draws its built-in scene\n";
+}
+
+int runWeb(const LessonInfo& info, const LessonFactory& make, int argc, char** argv, bool sceneLesson) {
   run = std::make_unique<WebRun>();
   run->info = info;
   run->make = make;
@@ -162,6 +182,7 @@ int runWeb(const LessonInfo& info, const LessonFactory& make, int argc, char** a
     run->session = std::make_unique<Session>(run->info, run->make, run->commandLine, Backend::Web);
     const GlFeatures& f = run->session->context->features();
     std::cerr << run->info.id << ": " << f.renderer << ", " << f.version << "; " << f.summary() << "\n";
+    sayWhatIsMissing(sceneLesson);
     renderAndShow(run->commandLine.time);
     stencil_page_ready(lessonJson(*run).c_str());
   });
@@ -171,12 +192,12 @@ int runWeb(const LessonInfo& info, const LessonFactory& make, int argc, char** a
 }  // namespace
 
 int runLesson(const LessonInfo& info, const LessonFactory& factory, int argc, char** argv) {
-  return runWeb(info, factory, argc, argv);
+  return runWeb(info, factory, argc, argv, false);
 }
 
 // Scene files in the browser are not read yet: the lesson draws its built-in scene.
 int runSceneLesson(const LessonInfo& info, const SceneLessonFactory& factory, int argc, char** argv) {
-  return runWeb(info, [factory] { return factory(nullptr); }, argc, argv);
+  return runWeb(info, [factory] { return factory(nullptr); }, argc, argv, true);
 }
 
 }  // namespace stencil
@@ -224,13 +245,13 @@ EMSCRIPTEN_KEEPALIVE void stencil_web_time(double time) {
   stencil::guarded([time] { stencil::renderAndShow(time); });
 }
 
-// The view (0 colour, 1 stencil, 2 grey, 3 bits: kViewNames), then the current frame again.
+// The view (0 colour, 1 stencil, 2 grey, 3 bits, 4 depth), then the current frame again.
 EMSCRIPTEN_KEEPALIVE int stencil_web_view(int view) {
   if (!run || !run->session) return 1;
   return stencil::guarded([view] {
-           if (view < 0 || view > 3)
+           if (view < 0 || view > 4)
              throw stencil::UsageError("view " + std::to_string(view) +
-                                       ": the browser has colour, stencil, grey and bits (no depth yet)");
+                                       ": the browser has colour, stencil, grey, bits and depth");
            run->view = view;
            stencil::renderAndShow(run->time);
          })

@@ -3,7 +3,8 @@
 // made from the lesson's own declarations (LessonInfo), which the program hands over when ready.
 //
 // The URL: ?variant=V&time=T&size=WxH&set=NAME:VALUE,NAME:VALUE&paused=1&view=stencil&pass=3
-// (view: colour, stencil, grey or bits; pass: the frame as it was after that pass, 1 the first)
+// (&without=EXT,EXT: below)
+// (view: colour, stencil, grey, bits or depth; pass: the frame as it was after that pass, 1 the first)
 // The snapshot contract (the tests'): with &snapshot=1 the frame at that time and size is drawn,
 // then <img id="snapshot-colour"> and <img id="snapshot-stencil"> (PNG data URLs; the stencil one
 // grey byte a pixel, as --stencil-out's .raw.png) are added to the page and document.title is
@@ -18,7 +19,7 @@ const logBox = document.getElementById('log');
 let lesson = null;  // the lesson's declarations, once its program is ready
 let failed = false;
 let passLabels = [];  // the passes the last frame ran
-const views = ['colour', 'stencil', 'grey', 'bits'];
+const views = ['colour', 'stencil', 'grey', 'bits', 'depth'];
 
 function log(text) {
   console.log(text);
@@ -149,11 +150,10 @@ function makeControls(info) {
   label('time (s)', time);
   const view = document.createElement('select');
   view.id = 'view';
-  for (const name of views.concat(['depth'])) {
+  for (const name of views) {
     const option = document.createElement('option');
     option.value = name;
-    option.textContent = name === 'depth' ? 'depth (not in the browser yet)' : name;
-    option.disabled = name === 'depth';
+    option.textContent = name;
     view.appendChild(option);
   }
   view.addEventListener('change', () => {
@@ -235,6 +235,17 @@ window.Module = {
   onAbort: what => StencilPage.error('the lesson stopped: ' + what),
 };
 window.addEventListener('error', e => StencilPage.error(e.message));
+
+// &without=EXT,EXT hides those WebGL extensions from the lesson, to show (and test) the fallback a
+// browser without them takes; the page's log says which features the lesson found.
+const hidden = (params.get('without') || '').split(',').filter(name => name);
+if (hidden.length) {
+  const context = WebGL2RenderingContext.prototype;
+  const getExtension = context.getExtension, supported = context.getSupportedExtensions;
+  context.getExtension = function(name) { return hidden.includes(name) ? null : getExtension.call(this, name); };
+  context.getSupportedExtensions = function() { return supported.call(this).filter(n => !hidden.includes(n)); };
+  log('extensions hidden by the URL: ' + hidden.join(', '));
+}
 
 const program = document.createElement('script');
 program.src = lessonId + '.js';

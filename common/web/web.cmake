@@ -86,6 +86,7 @@ endfunction()
 file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/pages)
 set(page_template ${PROJECT_SOURCE_DIR}/common/web/lesson.html)
 set(page_script ${PROJECT_SOURCE_DIR}/common/web/page.cmake)
+set(links_filter ${PROJECT_SOURCE_DIR}/common/web/repository_links.lua)
 set(index_entries "")
 list(LENGTH STENCIL_WEB_LESSONS count)
 math(EXPR last "${count} - 1")
@@ -115,25 +116,44 @@ foreach(i RANGE ${last})
     math(EXPR j "${i} + 1")
     list(GET STENCIL_WEB_LESSONS ${j} next)
   endif()
-  # The docs page, converted at build time, then set in the page beside the canvas; its figures
-  # copied beside it.
+  # The docs page, converted at build time (its links to the repository's files made plain text by
+  # repository_links.lua), then set in the page beside the canvas.
   set(fragment ${CMAKE_BINARY_DIR}/pages/${id}.fragment.html)
   set(page ${STENCIL_SITE}/${id}.html)
   set(figures_stamp ${CMAKE_BINARY_DIR}/pages/${id}.figures.stamp)
   add_custom_command(OUTPUT ${page}
     COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_BINARY_DIR}/pages
-    COMMAND ${PANDOC_EXECUTABLE} --from gfm --to html5 --output ${fragment} ${PROJECT_SOURCE_DIR}/docs/${id}.md
+    COMMAND ${PANDOC_EXECUTABLE} --from gfm --to html5 --lua-filter ${links_filter} --output ${fragment}
+      ${PROJECT_SOURCE_DIR}/docs/${id}.md
     COMMAND ${CMAKE_COMMAND} -DTEMPLATE=${page_template} -DFRAGMENT=${fragment} -DOUT=${page}
       -DID=${id} "-DTITLE=${title}" -DPREVIOUS=${previous} -DNEXT=${next} -P ${page_script}
-    DEPENDS ${PROJECT_SOURCE_DIR}/docs/${id}.md ${page_template} ${page_script}
+    DEPENDS ${PROJECT_SOURCE_DIR}/docs/${id}.md ${page_template} ${page_script} ${links_filter}
     COMMENT "Page ${id}.html (pandoc)"
     VERBATIM)
-  if(EXISTS ${PROJECT_SOURCE_DIR}/docs/figures/${id})
-    file(GLOB_RECURSE figures CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/docs/figures/${id}/*)
+  # The pictures the page shows (figures/..., sweeps/...), each copied to the same place in the
+  # site; read from the page again whenever it changes.
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/docs/${id}.md)
+  file(READ ${PROJECT_SOURCE_DIR}/docs/${id}.md markdown)
+  string(REGEX MATCHALL "!\\[[^]]*\\]\\([^) ]+" images "${markdown}")
+  set(figures)
+  foreach(image IN LISTS images)
+    string(REGEX REPLACE "^!\\[[^]]*\\]\\(" "" image "${image}")
+    if(NOT image MATCHES "^[a-z]+:" AND EXISTS ${PROJECT_SOURCE_DIR}/docs/${image})
+      list(APPEND figures ${image})
+    endif()
+  endforeach()
+  list(REMOVE_DUPLICATES figures)
+  set(copies)
+  foreach(image IN LISTS figures)
+    list(APPEND copies COMMAND ${CMAKE_COMMAND} -E copy_if_different ${PROJECT_SOURCE_DIR}/docs/${image}
+         ${STENCIL_SITE}/${image})
+  endforeach()
+  if(figures)
+    list(TRANSFORM figures PREPEND ${PROJECT_SOURCE_DIR}/docs/ OUTPUT_VARIABLE figure_files)
     add_custom_command(OUTPUT ${figures_stamp}
-      COMMAND ${CMAKE_COMMAND} -E copy_directory ${PROJECT_SOURCE_DIR}/docs/figures/${id} ${STENCIL_SITE}/figures/${id}
+      ${copies}
       COMMAND ${CMAKE_COMMAND} -E touch ${figures_stamp}
-      DEPENDS ${figures}
+      DEPENDS ${figure_files}
       VERBATIM)
     list(APPEND pages ${figures_stamp})
   endif()

@@ -42,6 +42,7 @@
 #include "geometry/scene.h"
 #include "geometry/shapes.h"
 #include "gl/doubled_caster.h"
+#include "gl/framebuffer.h"
 #include "gl/gpu_mesh.h"
 #include "gl/lesson.h"
 #include "gl/light_shading.h"
@@ -140,7 +141,9 @@ class DepthComplexity final : public Lesson {
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);  // the counts stay as they are
     const bool saturates = !f.on("wrap");
     std::vector<std::uint64_t> histogram(256, 0);
-    f.ownOcclusionQueries([&] { histogram = measureHistogram(); });
+    f.ownOcclusionQueries([&] {  // the browser's queries are boolean: there the stencil is read
+      histogram = f.features.samplesPassed ? measureHistogram() : stencilHistogram(f.framebuffer(), f.size);
+    });
     int top = 1, largest = 0;
     std::uint64_t counted = 0, covered = 0;
     for (int k = 1; k < 256; ++k) {

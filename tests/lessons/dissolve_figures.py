@@ -17,16 +17,15 @@ tests/docs/page_tables.py.
     tests/lessons/dissolve_figures.py BUILD_DIR [--no-strips] [--no-timing]
     tests/lessons/dissolve_figures.py BUILD_DIR --figures-only OUT_DIR    # the pictures only, into OUT_DIR
 
-Reads and writes PNG with the standard library only (8-bit RGBA, as the lessons write them).
+Reads and writes PNG with the standard library only (tests/lessons/png_io.py).
 """
 import json
 import pathlib
 import resource
-import struct
 import sys
 import tempfile
-import zlib
 
+import png_io
 from lesson_run import run
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -48,43 +47,15 @@ TIMED = [(0, 2, 0, 1), (0, 2, 256, 1), (0, 2, 128, 1), (0, 3, 128, 1), (0, 1, 12
 
 
 def read_png(path):
-    data = path.read_bytes()
-    pos, idat = 8, b""
-    while pos < len(data):
-        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        if kind == b"IHDR":
-            width, height, depth, colour = struct.unpack(">IIBB", data[pos + 8:pos + 18])
-            assert depth == 8 and colour == 6, f"{path}: not 8-bit RGBA"
-        elif kind == b"IDAT":
-            idat += data[pos + 8:pos + 8 + length]
-        pos += 12 + length
-    raw, stride, rows, prev = zlib.decompress(idat), 4 * width, [], bytearray(4 * width)
-    for y in range(height):
-        kind, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):
-            a = line[i - 4] if i >= 4 else 0
-            b, c = prev[i], prev[i - 4] if i >= 4 else 0
-            if kind == 1:
-                line[i] = (line[i] + a) & 255
-            elif kind == 2:
-                line[i] = (line[i] + b) & 255
-            elif kind == 3:
-                line[i] = (line[i] + (a + b) // 2) & 255
-            elif kind == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append(line)
-        prev = line
-    return width, height, rows
+    """(width, height, rows): an RGBA picture's rows, top first, each a bytearray."""
+    width, height, channels, pixels = png_io.read_png(path)
+    if channels != 4:
+        raise ValueError(f"{path}: not 8-bit RGBA")
+    return width, height, [bytearray(pixels[y * 4 * width:(y + 1) * 4 * width]) for y in range(height)]
 
 
 def write_png(path, width, height, rows):
-    def chunk(kind, body):
-        return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body))
-    raw = b"".join(b"\0" + bytes(r) for r in rows)
-    path.write_bytes(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0))
-                     + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+    png_io.write_png(path, width, height, 4, b"".join(bytes(r) for r in rows))
 
 
 def stats(exe, args):

@@ -6,14 +6,14 @@ and where they differ (magenta over the fault, dimmed). One PNG per fault in OUT
 
     tests/lessons/halo_crops.py BUILD_DIR OUT_DIR [SIZE]    # SIZE 320x240 by default
 
-Plain Python: the PNGs are read and written with zlib (8-bit RGB or RGBA, not interlaced).
+Plain Python: the PNGs are read and written by tests/lessons/png_io.py.
 """
 import pathlib
-import struct
 import subprocess
 import sys
 import tempfile
-import zlib
+
+import png_io
 
 # name: (fault variant, fixed variant)
 PAIRS = {
@@ -27,48 +27,13 @@ MARGIN, TARGET, GAP = 8, 360, 4  # pixels of margin; the crop's longer side scal
 
 
 def read_png(path):
-    data = pathlib.Path(path).read_bytes()
-    assert data[:8] == b"\x89PNG\r\n\x1a\n", path
-    pos, idat = 8, b""
-    while pos < len(data):
-        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        body = data[pos + 8:pos + 8 + length]
-        if kind == b"IHDR":
-            w, h, depth, colour, _, _, interlace = struct.unpack(">IIBBBBB", body)
-            assert depth == 8 and colour in (2, 6) and interlace == 0, f"{path}: unsupported PNG"
-        elif kind == b"IDAT":
-            idat += body
-        pos += 12 + length
-    bpp = 4 if colour == 6 else 3
-    raw, stride = zlib.decompress(idat), w * bpp
-    rows, prev = [], bytearray(stride)
-    for y in range(h):
-        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for x in range(stride):
-            a = line[x - bpp] if x >= bpp else 0
-            b, c = prev[x], prev[x - bpp] if x >= bpp else 0
-            if f == 1:
-                line[x] = (line[x] + a) & 255
-            elif f == 2:
-                line[x] = (line[x] + b) & 255
-            elif f == 3:
-                line[x] = (line[x] + (a + b) // 2) & 255
-            elif f == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[x] = (line[x] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append([tuple(line[i:i + 3]) for i in range(0, stride, bpp)])
-        prev = line
-    return rows
+    """Rows of (r, g, b) tuples, top row first."""
+    w, h, c, pixels = png_io.read_png(path)
+    return [[tuple(pixels[(y * w + x) * c:(y * w + x) * c + 3]) for x in range(w)] for y in range(h)]
 
 
 def write_png(path, rows):
-    h, w = len(rows), len(rows[0])
-    raw = b"".join(b"\0" + bytes(v for px in row for v in px) for row in rows)
-    chunk = lambda kind, body: struct.pack(">I", len(body)) + kind + body + struct.pack(
-        ">I", zlib.crc32(kind + body) & 0xFFFFFFFF)
-    pathlib.Path(path).write_bytes(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0))
-                                   + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+    png_io.write_png(path, len(rows[0]), len(rows), 3, b"".join(bytes(v for px in row for v in px) for row in rows))
 
 
 def render(exe, variant, size, folder):

@@ -251,6 +251,30 @@ TEST(ShaderForWebGl, ClipDistanceAsksForTheExtension) {
             "#version 300 es\n#extension GL_ANGLE_clip_cull_distance : enable\n");
 }
 
+// Without WEBGL_clip_cull_distance the planes become an output, and the fragment shader of the same
+// program discards by them on main's line, so that the line numbers stay.
+TEST(ShaderForWebGl, ClipDistanceWithoutTheExtensionBecomesADiscard) {
+  const WebGlShader vs = glslForWebGl(
+      "#version 330 core\nvoid main() {\n  gl_ClipDistance[0] = 1.0;\n  gl_ClipDistance[1] = -1.0;\n}\n", false);
+  EXPECT_EQ(vs.clipPlanes, 2);
+  EXPECT_EQ(vs.source.find("#extension"), std::string::npos);
+  EXPECT_EQ(vs.source.substr(vs.source.find("precision highp sampler2D;\n") + 27),
+            "out float stencil_clipDistance[2];\n#line 2\nvoid main() {\n  stencil_clipDistance[0] = 1.0;\n"
+            "  stencil_clipDistance[1] = -1.0;\n}\n");
+  const WebGlShader fs = glslForWebGl("#version 330 core\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n", false, 2);
+  EXPECT_EQ(fs.source.substr(fs.source.find("precision highp sampler2D;\n") + 27),
+            "in float stencil_clipDistance[2];\n#line 2\nout vec4 c;\nvoid main() { if (stencil_clipDistance[0] < 0.0 || "
+            "stencil_clipDistance[1] < 0.0) discard; c = vec4(1.0); }\n");
+  // With the extension, nothing changes but the extension line.
+  EXPECT_EQ(glslForWebGl("#version 330 core\nvoid main() { gl_ClipDistance[0] = 1.0; }\n").clipPlanes, 0);
+}
+
+TEST(ShaderForWebGl, IntegerSamplersGetAPrecision) {
+  const std::string es = glslForWebGl("#version 330 core\nuniform usampler2D ids;\nvoid main() {}\n").source;
+  EXPECT_EQ(es.substr(es.find("precision highp sampler2D;\n") + 27), "precision highp usampler2D;\n#line 2\n"
+            "uniform usampler2D ids;\nvoid main() {}\n");
+}
+
 // GLSL ES has no uniform initialisers: the value is kept for the Program to set, the line stays.
 TEST(ShaderForWebGl, UniformInitialisersBecomeDefaults) {
   const WebGlShader es = glslForWebGl(

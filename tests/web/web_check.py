@@ -4,6 +4,12 @@ headless Chromium (SwiftShader's WebGL 2) beside --out and --stencil-out of the 
 one size, time and variant.
 
     tests/web/web_check.py SITE NATIVE_EXE CHROMIUM OUT_DIR [--variant V] [--size WxH] [--time T]
+                           [--without EXT,EXT] [--cracks]
+
+--cracks forgives lone pixels one count off in a uniform stretch of the native stencil (crack()), for
+the lessons whose shadow volumes reach infinity. --without hides those WebGL extensions from the page
+(its &without=), so that the browser takes the fallback it takes without them; the native lesson is
+the same.
 
 The stencil must be the native one's except on edge pixels, judged as the ray-cast oracle judges
 them (common/geometry/shadow_oracle.cpp, onEdge): a pixel whose 3x3 neighbourhood in the native
@@ -13,7 +19,7 @@ the native picture, a pixel with a neighbour more than COLOUR_CHANNEL away from 
 llvmpipe cover a triangle's edge pixels each their own way). The pictures stay in OUT_DIR. Exit 0 pass, 1 fail, 2 bad arguments, 77 (skipped) when SITE has no page for the lesson.
 
 Plain Python: a server on 127.0.0.1 (a free port) serves SITE for the run, Chromium's --dump-dom
-returns the page once it is idle, and the PNGs are read with zlib.
+returns the page once it is idle, and the PNGs are read by tests/lessons/png_io.py.
 """
 import argparse
 import base64
@@ -21,54 +27,17 @@ import functools
 import http.server
 import pathlib
 import re
-import struct
 import subprocess
 import sys
 import threading
 import time
-import zlib
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "lessons"))
+from png_io import decode_png  # noqa: E402 (the shared reader, found beside the lessons' scripts)
 
 COLOUR_CHANNEL = 5
 CHROMIUM_FLAGS = ["--headless=new", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
                   "--disable-gpu-sandbox", "--virtual-time-budget=10000"]
-
-
-def read_png(data):
-    """(width, height, channels, bytes) of an 8-bit grey, RGB or RGBA PNG, not interlaced."""
-    if data[:8] != b"\x89PNG\r\n\x1a\n":
-        raise ValueError("not a PNG")
-    pos, idat = 8, b""
-    while pos < len(data):
-        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        body = data[pos + 8:pos + 8 + length]
-        if kind == b"IHDR":
-            w, h, depth, colour, _, _, interlace = struct.unpack(">IIBBBBB", body)
-            if depth != 8 or colour not in (0, 2, 6) or interlace:
-                raise ValueError("unsupported PNG")
-        elif kind == b"IDAT":
-            idat += body
-        pos += 12 + length
-    bpp = {0: 1, 2: 3, 6: 4}[colour]
-    raw, stride = zlib.decompress(idat), w * bpp
-    out, prev = bytearray(), bytearray(stride)
-    for y in range(h):
-        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for x in range(stride):
-            a = line[x - bpp] if x >= bpp else 0
-            b, c = prev[x], prev[x - bpp] if x >= bpp else 0
-            if f == 1:
-                line[x] = (line[x] + a) & 255
-            elif f == 2:
-                line[x] = (line[x] + b) & 255
-            elif f == 3:
-                line[x] = (line[x] + (a + b) // 2) & 255
-            elif f == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[x] = (line[x] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        out += line
-        prev = line
-    return w, h, bpp, bytes(out)
 
 
 def on_edge(differs, w, h, x, y):
@@ -82,10 +51,27 @@ def on_edge(differs, w, h, x, y):
 
 
 def compare_stencil(web, native, w, h):
-    """Pixels that differ, and how many of them lie on an edge of the native stencil."""
+    """Pixels that differ, how many of them lie on an edge of the native stencil, and how many of the
+    rest are cracks (crack())."""
     differ = [i for i in range(w * h) if web[i] != native[i]]
-    edges = sum(on_edge(lambda i, j: native[i] != native[j], w, h, i % w, i // w) for i in differ)
-    return len(differ), edges
+    off_edge = [i for i in differ if not on_edge(lambda i, j: native[i] != native[j], w, h, i % w, i // w)]
+    return len(differ), len(differ) - len(off_edge), sum(crack(web, native, w, h, i) for i in off_edge)
+
+
+def crack(web, native, w, h, i):
+    """A lone pixel one count off the native stencil (modulo 256), every neighbour of it as native:
+    one shadow-volume face missed or met twice along an edge it shares with the next face.
+    SwiftShader leaves a few in lessons 10, 15 and 16, whose volumes reach infinity (w = 0);
+    the native frames have none there."""
+    x, y = i % w, i // w
+    if (web[i] - native[i]) % 256 not in (1, 255):
+        return False
+    for ny in range(max(0, y - 1), min(h, y + 2)):
+        for nx in range(max(0, x - 1), min(w, x + 2)):
+            j = ny * w + nx
+            if j != i and (web[j] != native[i] or native[j] != native[i]):
+                return False
+    return True
 
 
 def channel_diff(a, i, b, j):
@@ -136,6 +122,8 @@ def main():
     parser.add_argument("--variant", default="")
     parser.add_argument("--size", default="320x240")
     parser.add_argument("--time", default="1")
+    parser.add_argument("--without", default="")
+    parser.add_argument("--cracks", action="store_true")
     parser.add_argument("--timeout", type=float, default=120)
     args = parser.parse_args()
     lesson = args.native.name
@@ -159,6 +147,8 @@ def main():
     native_s = time.monotonic() - start
 
     query = f"time={args.time}&size={args.size}&snapshot=1" + (f"&variant={args.variant}" if args.variant else "")
+    if args.without:
+        query += f"&without={args.without}"
     start = time.monotonic()
     title, images = snapshot(args.site, args.chromium, f"{lesson}.html", query, args.timeout)
     web_s = time.monotonic() - start
@@ -168,19 +158,21 @@ def main():
     for name, png in images.items():
         (args.out / f"web-{name[len('snapshot-'):]}.png").write_bytes(png)
 
-    w, h, channels, web_stencil = read_png(images["snapshot-stencil"])
-    nw, nh, _, native_stencil = read_png((args.out / "native-stencil.raw.png").read_bytes())
-    cw, ch, cc, web_colour = read_png(images["snapshot-colour"])
-    _, _, nc, native_colour = read_png((args.out / "native.png").read_bytes())
+    w, h, channels, web_stencil = decode_png(images["snapshot-stencil"])
+    nw, nh, _, native_stencil = decode_png((args.out / "native-stencil.raw.png").read_bytes())
+    cw, ch, cc, web_colour = decode_png(images["snapshot-colour"])
+    _, _, nc, native_colour = decode_png((args.out / "native.png").read_bytes())
     if (w, h) != (nw, nh) or (cw, ch) != (nw, nh) or channels != 1 or cc != 4 or nc != 4:
         print(f"web_check: sizes or channels differ: web stencil {w}x{h}x{channels}, colour {cw}x{ch}x{cc}; "
               f"native {nw}x{nh}")
         return 1
-    differ, edges = compare_stencil(web_stencil, native_stencil, w, h)
+    differ, edges, cracks = compare_stencil(web_stencil, native_stencil, w, h)
     over, colour_edges, worst = compare_colour(web_colour, native_colour, w, h)
-    passed = differ == edges and over == colour_edges
-    print(f"{'web ok' if passed else 'web FAILED'}: {lesson} {args.variant or '(default variant)'} at {args.size}, "
-          f"t={args.time}: stencil {differ} of {w * h} pixels differ, {edges} of them on edges; colour {over} pixels "
+    passed = differ == edges + (cracks if args.cracks else 0) and over == colour_edges
+    print(f"{'web ok' if passed else 'web FAILED'}: {lesson} {args.variant or '(default variant)'}"
+          f"{' without ' + args.without if args.without else ''} at {args.size}, "
+          f"t={args.time}: stencil {differ} of {w * h} pixels differ, {edges} of them on edges, {cracks} lone cracks"
+          f"{' (forgiven: --cracks)' if args.cracks else ''}; colour {over} pixels "
           f"over {COLOUR_CHANNEL}/255, {colour_edges} of them on edges, max channel diff {worst}; "
           f"native {native_s:.1f} s, browser {web_s:.1f} s (pictures in {args.out})")
     return 0 if passed else 1
