@@ -625,7 +625,7 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
   }
   // A section a click opened keeps the panel within the window: where both sections do not fit
   // above the options' least (two rows), the one opened earlier folds, and one still too tall
-  // scrolls in the room left.
+  // scrolls in the room left (the spacing after its region counted in it).
   const float optionsLeast = s.options.empty() ? 0.0f : std::min(wanted, 2 * row);
   const float sectionRoom = std::max(line, room - fixed - views - optionsLeast);
   if (!relayout && st.keysOpen && st.statsOpen && keysBody + statsBody > sectionRoom) {
@@ -746,7 +746,7 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
   if (st.statsOpen) {
     const float top = ImGui::GetCursorPosY();
     const bool scrolls = statsBody > statsShown + 0.5f;
-    if (scrolls) ImGui::BeginChild("##stats", ImVec2(0, statsShown), false, ImGuiWindowFlags_NoNavInputs);
+    if (scrolls) ImGui::BeginChild("##stats", ImVec2(0, statsShown - style.ItemSpacing.y), false, ImGuiWindowFlags_NoNavInputs);
     std::uint64_t draws = 0, triangles = 0;
     for (const PassStats& p : s.recorder->passStats()) draws += p.drawCalls, triangles += p.triangles;
     ImGui::Text("%llu draw calls, %llu triangles", static_cast<unsigned long long>(draws),
@@ -767,7 +767,7 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
   if (st.keysOpen) {
     const float top = ImGui::GetCursorPosY();
     const bool scrolls = keysBody > keysShown + 0.5f;
-    if (scrolls) ImGui::BeginChild("##keys", ImVec2(0, keysShown), false, ImGuiWindowFlags_NoNavInputs);
+    if (scrolls) ImGui::BeginChild("##keys", ImVec2(0, keysShown - style.ItemSpacing.y), false, ImGuiWindowFlags_NoNavInputs);
     ImGui::TextWrapped("%s", keys.c_str());
     if (scrolls) ImGui::EndChild();
     bodies += ImGui::GetCursorPosY() - top;
