@@ -700,6 +700,12 @@ int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, 
     const LessonFactory make = [&] { return factory(scene ? &*scene : nullptr); };
     setShaderDirFlag(cl.shaderDir);
     BackendChoice choice = chooseBackend(cl.backend, cl.headless || cl.shadowHours.has_value());
+    // A window's picture smaller than this cannot be looked at, nor the panel laid out beside it; a
+    // --frames run (a golden test: the picture alone) and a headless one take any --size.
+    if (choice.backend == Backend::Window && !cl.frames && (cl.width < kMinWindowWidth || cl.height < kMinWindowHeight))
+      throw UsageError("--size " + std::to_string(cl.width) + "x" + std::to_string(cl.height) +
+                       " is too small for the window: its picture needs at least " + std::to_string(kMinWindowWidth) +
+                       "x" + std::to_string(kMinWindowHeight));
     std::unique_ptr<Session> session;
     while (!session) {
       try {

@@ -101,6 +101,8 @@ class Session {
 // picture, never over it. A window run opens this much wider than --size, so the picture is the
 // size asked for (with --frames, a test run, the panel starts hidden and the window is --size).
 constexpr int kWindowPanelWidth = 300;
+// The smallest picture a window opens with (--size); headless runs take any size.
+constexpr int kMinWindowWidth = 160, kMinWindowHeight = 120;
 
 // The course: the lesson programs beside this one (files named NN-name in the folder of
 // /proc/self/exe), in order. Empty where the folder cannot be read.

@@ -33,11 +33,21 @@ constexpr std::uint16_t kPlus = 0b000'010'111'010'000;
 constexpr std::uint16_t kOpen = 0b001'010'010'010'001, kClose = 0b100'010'010'010'100;
 constexpr std::uint16_t kPoint = 0b000'000'000'000'010;
 constexpr std::uint16_t kHour = 0b100'100'111'101'101;  // 'h'
+// The few letters the window's legends need: the grey view's rule ("v x 255/7"), the depth view's "far".
+constexpr std::uint16_t kV = 0b000'101'101'101'010, kX = 0b000'101'010'101'000, kSlash = 0b001'001'010'100'100;
+constexpr std::uint16_t kF = 0b011'100'110'100'100, kA = 0b000'011'101'101'011, kR = 0b000'101'110'100'100;
 
-// Draws digits, '+', '.', 'h' and parentheses with the font scaled by `scale`; returns the width drawn.
+// Draws digits, '+', '.', '/', 'h', 'v', 'x', 'f', 'a', 'r' and parentheses with the font scaled by
+// `scale`; returns the width drawn.
 int drawText(Image& img, int x, int y, const std::string& text, int scale, Rgb c) {
   for (size_t i = 0; i < text.size(); ++i) {
     const std::uint16_t glyph = text[i] == '+'   ? kPlus
+                                : text[i] == '/' ? kSlash
+                                : text[i] == 'v' ? kV
+                                : text[i] == 'x' ? kX
+                                : text[i] == 'f' ? kF
+                                : text[i] == 'a' ? kA
+                                : text[i] == 'r' ? kR
                                 : text[i] == '(' ? kOpen
                                 : text[i] == ')' ? kClose
                                 : text[i] == '.' ? kPoint
@@ -191,24 +201,33 @@ Image stencilRamp(const Image& stencil, const StencilRampStyle& style) {
   std::vector<std::uint64_t> histogram(256, 0);
   for (std::uint8_t v : stencil.pixels) ++histogram[v];
   std::array<Rgb, 256> colours = stencilPictureColours(histogram);
+  // The grey view stretches the values present so that the largest is white: counts of 0 to 7
+  // would be black to the eye as grey levels 0 to 7. The legend starts with the rule.
+  int largest = 0;
+  for (int v = 0; v < 256; ++v)
+    if (histogram[static_cast<std::size_t>(v)] > 0) largest = v;
+  const std::string greyRule = "v x 255/" + std::to_string(largest);
   if (style.grey)
     for (int v = 0; v < 256; ++v) {
-      const auto g = static_cast<std::uint8_t>(v);
+      const auto g = static_cast<std::uint8_t>(largest > 0 ? std::min(255, (v * 255 + largest / 2) / largest) : 0);
       colours[static_cast<std::size_t>(v)] = {g, g, g};
     }
 
   const int k = std::max(style.legendScale, 1);
-  const int scale = 2 * k, small = 2 * k, entryHeight = 7 * scale + 4 * k, swatch = 5 * scale, gap = 3 * k;
+  const int scale = style.textPixels > 0 ? style.textPixels : 2 * k, small = scale,
+            entryHeight = 7 * scale + 4 * k, swatch = 5 * scale, gap = 3 * k;
+  const Rgb countGrey = style.textPixels > 0 ? Rgb{235, 235, 235} : Rgb{170, 170, 170};
   // Lay the legend entries out first to know how tall the band is. With a row limit, the lowest
   // values are kept, none skipped, and the rest counted in a "+N" entry.
   std::vector<int> shown;
   for (int v = 0; v < 256; ++v)
     if (histogram[static_cast<size_t>(v)] > 0) shown.push_back(v);
   struct Entry {
-    int value, x, y;  // value -1: the "+N" of the values left out
+    int value, x, y;  // value -1: the "+N" of the values left out; -2: the grey view's rule
   };
   const auto entryWidth = [&](int v, int left) {
-    return v < 0 ? textWidth("+" + std::to_string(left), scale) + 10 * k
+    return v == -2  ? textWidth(greyRule, scale) + 10 * k
+           : v < 0 ? textWidth("+" + std::to_string(left), scale) + 10 * k
                  : swatch + gap + textWidth(std::to_string(v), scale) + gap +
                        textWidth("(" + std::to_string(histogram[static_cast<size_t>(v)]) + ")", small) + 10 * k;
   };
@@ -219,6 +238,7 @@ Image stencilRamp(const Image& stencil, const StencilRampStyle& style) {
     int x = 4 * k, y = 4 * k;
     rows = 1;
     std::vector<int> all = values;
+    if (style.grey) all.insert(all.begin(), -2);
     if (left > 0) all.push_back(-1);
     for (const int v : all) {
       const int width = entryWidth(v, left);
@@ -259,8 +279,13 @@ Image stencilRamp(const Image& stencil, const StencilRampStyle& style) {
   fillRect(out, 0, stencil.height, out.width, band, {48, 48, 48});
   for (const Entry& e : entries) {
     const int top = stencil.height + e.y;
+    if (e.value == -2) {
+      drawText(out, e.x, top, greyRule, scale, {255, 255, 255});
+      continue;
+    }
     if (e.value < 0) {
-      drawText(out, e.x, top, "+" + std::to_string(shown.size() + 1 - entries.size()), scale, {255, 255, 255});
+      drawText(out, e.x, top, "+" + std::to_string(shown.size() + (style.grey ? 2 : 1) - entries.size()), scale,
+               {255, 255, 255});
       continue;
     }
     fillRect(out, e.x - 1, top - 1, swatch + 2, swatch + 2, {200, 200, 200});  // outline: 0 is black
@@ -269,7 +294,7 @@ Image stencilRamp(const Image& stencil, const StencilRampStyle& style) {
     drawNumber(out, numberX, top, e.value, scale, {255, 255, 255});
     const std::string n = "(" + std::to_string(histogram[static_cast<std::size_t>(e.value)]) + ")";
     drawText(out, numberX + textWidth(std::to_string(e.value), scale) + gap, top + 5 * scale - 5 * small, n,
-             small, {170, 170, 170});
+             small, countGrey);
   }
   return out;
 }
@@ -440,7 +465,7 @@ float eyeDepth(float windowDepth, const glm::mat4& projection, bool reversed) {
 }
 
 Image depthPicture(const std::vector<float>& depth, int width, int height, const glm::mat4& projection,
-                   bool reversed, DepthRange* rangeOut, int textScale) {
+                   bool reversed, DepthRange* rangeOut, int textScale, bool window) {
   std::vector<float> eye(depth.size());
   DepthRange range;
   range.nearest = std::numeric_limits<float>::infinity();
@@ -476,7 +501,7 @@ Image depthPicture(const std::vector<float>& depth, int width, int height, const
   char nearText[32], farText[32];
   std::snprintf(nearText, sizeof nearText, "%.2f", static_cast<double>(range.nearest));
   std::snprintf(farText, sizeof farText, "%.2f", static_cast<double>(range.farthest));
-  const std::string clearedText = "(" + std::to_string(range.cleared) + ")";
+  const std::string clearedText = (window ? "far (" : "(") + std::to_string(range.cleared) + ")";
   const int top = height + 4, swatch = 5 * scale;
   // The ramp between the two eye depths, then the cleared swatch and its count at the right.
   const int clearedWidth = swatch + 3 + textWidth(clearedText, small) + 4;
@@ -490,7 +515,8 @@ Image depthPicture(const std::vector<float>& depth, int width, int height, const
   x += drawText(out, x, top, farText, scale, {255, 255, 255}) + 6;
   fillRect(out, x - 1, top - 1, swatch + 2, swatch + 2, {200, 200, 200});
   fillRect(out, x, top, swatch, swatch, kDepthClearedColour);
-  drawText(out, x + swatch + 3, top + 5 * scale - 5 * small, clearedText, small, {170, 170, 170});
+  drawText(out, x + swatch + 3, top + 5 * scale - 5 * small, clearedText, small,
+           window ? Rgb{235, 235, 235} : Rgb{170, 170, 170});
   if (rangeOut) *rangeOut = range;
   return out;
 }

@@ -41,12 +41,15 @@ constexpr std::uint64_t kRarePixels = 16;
 // swatches legendScale times their size; at most maxLegendRows rows of entries (0: as many as
 // the values need), the lowest values kept and the others counted as "+N" at the end; or no
 // legend band at all (the window's panel lists the values instead). `grey`: each value v in grey
-// level v (the raw values), no rings, the legend naming the values a near-black picture hides.
+// v x 255 / top, top the largest value present (0 black, top white; the raw values are
+// --stencil-out's), no rings, the legend starting with that rule ("v x 255/7"). textPixels > 0 (the
+// window's): the legend's digits and counts that many pixels a dot, the counts near-white.
 struct StencilRampStyle {
   int legendScale = 1;
   int maxLegendRows = 0;
   bool legend = true;
   bool grey = false;
+  int textPixels = 0;
 };
 Image stencilRamp(const Image& stencil, const StencilRampStyle& style = {});
 
@@ -114,11 +117,12 @@ struct DepthRange {
 // planes; the cleared depth in kDepthClearedColour. Reversed depth gives the picture standard depth
 // gives for the same eye depths. Below, a legend band: the ramp with the nearest and farthest eye
 // depth written at its ends (2 decimals), and a swatch of the cleared colour with its pixel count,
-// its digits textScale pixels a dot (2; the window's follow its UI scale).
+// its digits textScale pixels a dot (2; the window's follow its UI scale). `window`: the cleared
+// swatch labelled "far" (the far plane or nothing drawn) and its count near-white.
 constexpr std::uint8_t kDepthFarGrey = 48;
 constexpr std::array<std::uint8_t, 3> kDepthClearedColour = {20, 40, 120};
 Image depthPicture(const std::vector<float>& depth, int width, int height, const glm::mat4& projection,
-                   bool reversed, DepthRange* range = nullptr, int textScale = 2);
+                   bool reversed, DepthRange* range = nullptr, int textScale = 2, bool window = false);
 // One line for a terminal: the range a depth picture stretched, and what its colours mean.
 std::string depthLegendLine(const DepthRange&);
 

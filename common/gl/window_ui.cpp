@@ -66,6 +66,8 @@ struct WindowState {
   // views and what the two sections hold (measured; 0 before the first frame).
   float optionsHeight = 0, fixedBelow = 0;
   bool keysOpen = true, statsOpen = true;  // the two sections as the last frame showed them
+  bool statsOpenedLast = false;            // of the two, the draw calls and counts were opened last
+  bool sayFit = false;                     // say the layout's line (a section opened or folded)
   bool compact = false;                    // the last frame's panel gave the options all it could
   int layoutFrames = 0;                    // frames drawn since the layout changed
   float leastPanelHeight = 0;              // the panel's height folded as far as it goes (measured; 0 before)
@@ -138,7 +140,7 @@ void sayStep(const WindowState& st) {
 const char* viewName(View v) {
   return v == View::Colour        ? "colour"
          : v == View::StencilRamp ? "stencil"
-         : v == View::StencilGrey ? "stencil in grey (value = grey level)"
+         : v == View::StencilGrey ? "stencil in grey (value x 255 / the largest value present)"
          : v == View::StencilBits ? "bit planes"
                                   : "depth";
 }
@@ -334,7 +336,7 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
       // so a test can set it against frames over wall time; then the lesson's time, the panel's t.
       char line[256];
       std::snprintf(line, sizeof line,
-                    "frame rate: %.2f fps, %.2f ms a frame (%zu frames in the last %.2f s); frame %lld at %.6f s on "
+                    "frame rate: %.2f fps, %.2f ms a frame (%zu frames in the last %.2f s); frame %lld at %.3f s on "
                     "the window's clock; the lesson's t = %.3f s%s",
                     st.rate.fps(), st.rate.msPerFrame(), st.rate.intervals(),
                     st.rate.fps() > 0 ? static_cast<double>(st.rate.intervals()) / st.rate.fps() : 0.0,
@@ -621,11 +623,22 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
     st.keysOpen = wanted + fixed + views + keysBody <= room;
     st.statsOpen = wanted + fixed + views + (st.keysOpen ? keysBody : 0.0f) + statsBody <= room;
   }
+  // A section a click opened keeps the panel within the window: where both sections do not fit
+  // above the options' least (two rows), the one opened earlier folds, and one still too tall
+  // scrolls in the room left (the spacing after its region counted in it).
+  const float optionsLeast = s.options.empty() ? 0.0f : std::min(wanted, 2 * row);
+  const float sectionRoom = std::max(line, room - fixed - views - optionsLeast);
+  if (!relayout && st.keysOpen && st.statsOpen && keysBody + statsBody > sectionRoom) {
+    (st.statsOpenedLast ? st.keysOpen : st.statsOpen) = false;
+    say(st, st.statsOpenedLast ? "the keys folded (room for the draw calls and counts)"
+                               : "the draw calls and counts folded (room for the keys)");
+  }
+  const float keysShown = std::min(keysBody, sectionRoom), statsShown = std::min(statsBody, sectionRoom);
   const float optionsTop = ImGui::GetCursorPosY() - (st.compact ? 0.0f : ImGui::GetFrameHeight());
   if (!s.options.empty()) {
-    const float open = (st.keysOpen ? keysBody : 0.0f) + (st.statsOpen ? statsBody : 0.0f);
+    const float open = (st.keysOpen ? keysShown : 0.0f) + (st.statsOpen ? statsShown : 0.0f);
     const float shown = std::max(std::min(wanted, room - fixed - views - open), 2 * row);
-    fit.optionsShown = shown, fit.optionsWanted = wanted;
+    fit.optionsShown = shown, fit.optionsWanted = st.optionsHeight;  // 0 until measured: not said
     ImGui::BeginChild("##options", ImVec2(0, shown), false, ImGuiWindowFlags_NoNavInputs);
     const float inner = ImGui::GetContentRegionAvail().x, panelEdge = edge;
     edge = ImGui::GetCursorScreenPos().x + inner;
@@ -725,24 +738,38 @@ PanelFit drawPanel(GLFWwindow* window, WindowState& st, float height) {
   // A click on a header says its line, as every other click does.
   const bool statsWere = st.statsOpen;
   st.statsOpen = ImGui::CollapsingHeader(rate);
-  if (st.statsOpen != statsWere) say(st, st.statsOpen ? "the draw calls and counts shown" : "the draw calls and counts folded");
+  if (st.statsOpen != statsWere) {
+    say(st, st.statsOpen ? "the draw calls and counts shown" : "the draw calls and counts folded");
+    st.statsOpenedLast = st.statsOpen;
+    st.sayFit = true;
+  }
   if (st.statsOpen) {
     const float top = ImGui::GetCursorPosY();
+    const bool scrolls = statsBody > statsShown + 0.5f;
+    if (scrolls) ImGui::BeginChild("##stats", ImVec2(0, statsShown - style.ItemSpacing.y), false, ImGuiWindowFlags_NoNavInputs);
     std::uint64_t draws = 0, triangles = 0;
     for (const PassStats& p : s.recorder->passStats()) draws += p.drawCalls, triangles += p.triangles;
     ImGui::Text("%llu draw calls, %llu triangles", static_cast<unsigned long long>(draws),
                 static_cast<unsigned long long>(triangles));
     for (const auto& [name, n] : s.recorder->counts())
       ImGui::TextWrapped("%s %llu", name.c_str(), static_cast<unsigned long long>(n));
+    if (scrolls) ImGui::EndChild();
     bodies += ImGui::GetCursorPosY() - top;
   }
   ImGui::SetNextItemOpen(st.keysOpen);
   const bool keysWere = st.keysOpen;
   st.keysOpen = ImGui::CollapsingHeader("keys");
-  if (st.keysOpen != keysWere) say(st, st.keysOpen ? "the keys listed" : "the keys folded");
+  if (st.keysOpen != keysWere) {
+    say(st, st.keysOpen ? "the keys listed" : "the keys folded");
+    if (st.keysOpen) st.statsOpenedLast = false;
+    st.sayFit = true;
+  }
   if (st.keysOpen) {
     const float top = ImGui::GetCursorPosY();
+    const bool scrolls = keysBody > keysShown + 0.5f;
+    if (scrolls) ImGui::BeginChild("##keys", ImVec2(0, keysShown - style.ItemSpacing.y), false, ImGuiWindowFlags_NoNavInputs);
     ImGui::TextWrapped("%s", keys.c_str());
+    if (scrolls) ImGui::EndChild();
     bodies += ImGui::GetCursorPosY() - top;
   }
   fit.keysListed = st.keysOpen;
@@ -766,7 +793,21 @@ void drawStatus(const std::string& line, float left, float width) {
   ImGui::Begin("##status", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoNav |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoSavedSettings);
-  ImGui::TextWrapped("%s", line.c_str());
+  // Broken at spaces only: ImGui's own wrapping also breaks after a full stop, inside a number.
+  const float wrap = ImGui::GetContentRegionAvail().x;
+  std::string row;
+  for (std::size_t at = 0; at < line.size();) {
+    const std::size_t end = std::min(line.find(' ', at), line.size());
+    const std::string word = line.substr(at, end - at), longer = row.empty() ? word : row + " " + word;
+    if (!row.empty() && ImGui::CalcTextSize(longer.c_str()).x > wrap) {
+      ImGui::TextUnformatted(row.c_str());
+      row = word;
+    } else {
+      row = longer;
+    }
+    at = end + 1;
+  }
+  ImGui::TextUnformatted(row.c_str());
   ImGui::End();
 }
 
@@ -805,20 +846,26 @@ void applyUiScale(float scale) {
   style.ScaleAllSizes(scale);
 }
 
-// The stencil views' pictures, the framebuffer's size: the values in grey (0 black, 255 white, the
-// raw values as docs/12's figures show them) or each in its colour, with the legend below, its
-// digits 10 px x the UI scale (rounded, at least 1) and at most a fifth (a third above scale 1) of
+// The legends' digits, 5 dots high, as high as the panel's text (13 px x the UI scale): pixels a dot.
+int legendDot(float uiScale) {
+  return std::max(2, static_cast<int>(std::lround(13.0f * uiScale / 5.0f)));
+}
+
+// The stencil views' pictures, the framebuffer's size: the values in grey (stretched: the largest
+// value present white) or each in its colour, with the legend below, its digits and counts the
+// panel's text size (legendDot) and at most a fifth (a third above scale 1) of
 // the height, the values past that counted as "+N"; or the bit planes. The legend keeps its size
 // on screen: the picture above it is shrunk to make its room, not the legend with it.
 Image stencilViewPicture(View view, const Image& stencil, float uiScale) {
   if (view == View::StencilBits) return stencilBitPlanes(stencil, uiScale);
-  const int k = std::max(1, static_cast<int>(std::lround(uiScale)));
-  // An entry row is 18 px at scale 1: as many rows as fit in a fifth of the picture at scale 1, a
-  // third above it (the larger digits need the rows), at least one.
+  const int k = std::max(1, static_cast<int>(std::lround(uiScale))), dot = legendDot(uiScale);
+  // An entry row is 7 dots and 4 px x k: as many rows as fit in a fifth of the picture at scale 1,
+  // a third above it (the larger digits need the rows), at least one.
   const int share = k > 1 ? 3 : 5;
   const Image ramp = stencilRamp(stencil, {.legendScale = k,
-                                           .maxLegendRows = std::max(1, stencil.height / share / (18 * k)),
-                                           .grey = view == View::StencilGrey});
+                                           .maxLegendRows = std::max(1, stencil.height / share / (7 * dot + 4 * k)),
+                                           .grey = view == View::StencilGrey,
+                                           .textPixels = dot});
   const int band = ramp.height - stencil.height, room = std::max(1, stencil.height - band);
   // The picture fitted into the room above the band (nearest pixel), centred, on the window's grey.
   const float fit = std::min(1.0f, static_cast<float>(room) / static_cast<float>(stencil.height));
@@ -884,10 +931,15 @@ int runWindow(Session& s) {
     st.frameLog = std::make_unique<std::ofstream>(log);
   for (std::size_t i = 0; i < st.course.size(); ++i)
     if (st.course[i].filename() == s.info.id) st.lessonIndex = static_cast<int>(i);
-  say(st, "lesson " + s.info.id + ": " + s.info.title +
-              (st.lessonIndex >= 0 ? " (" + std::to_string(st.lessonIndex + 1) + " of " +
-                                         std::to_string(st.course.size()) + " in the course)"
-                                   : std::string()));
+  // With the panel hidden nothing else on screen names the lesson (Page Down's, Page Up's): shown too.
+  const std::string opened = "lesson " + s.info.id + ": " + s.info.title +
+                             (st.lessonIndex >= 0 ? " (" + std::to_string(st.lessonIndex + 1) + " of " +
+                                                        std::to_string(st.course.size()) + " in the course)"
+                                                  : std::string());
+  if (st.panel || cl.frames)
+    say(st, opened);
+  else
+    tell(st, opened);
   // The UI scale: --ui-scale, else the monitor's content scale (a HiDPI screen's, or what the
   // desktop sets for a projector). The window opened --size plus the panel at --ui-scale or 1.
   float monitorScale = 1.0f, unused = 1.0f;
@@ -1004,8 +1056,8 @@ int runWindow(Session& s) {
       } else if (st.view == View::Depth) {
         DepthRange range;
         shown = depthPicture(snap ? snap->depth : s.framebuffer->readDepth(), s.framebuffer->width(),
-                             s.framebuffer->height(), s.projection, s.reversedDepth, &range,
-                             std::max(2, static_cast<int>(std::lround(2.0f * st.uiScale))));
+                             s.framebuffer->height(), s.projection, s.reversedDepth, &range, legendDot(st.uiScale),
+                             true);
         if (st.sayDepthRange) say(st, depthLegendLine(range));
         st.sayDepthRange = false;
         display.show(shown, areaX, areaW, h);
@@ -1060,7 +1112,7 @@ int runWindow(Session& s) {
       }
       // Said two frames after the change: the panel's layout uses the heights its last frame
       // measured, and whether it is compact (no title bar) the frame before.
-      if (st.sayLayout && ++st.layoutFrames >= 3) {
+      if ((st.sayLayout || st.sayFit) && ++st.layoutFrames >= 3) {
         st.layoutFrames = 0;
         // One line for what changed the layout (F1, a resize, the UI scale): the picture's size,
         // and whether the panel's widgets fit its height and width.
@@ -1088,7 +1140,7 @@ int runWindow(Session& s) {
           for (const std::string& c : fit.cut) line += "; cut: " + c;
         }
         say(st, line);
-        st.sayLayout = false;
+        st.sayLayout = st.sayFit = false;
       }
       glfwSwapBuffers(window);
       const double ended = glfwGetTime();

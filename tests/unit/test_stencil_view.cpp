@@ -148,19 +148,22 @@ TEST(StencilView, ALimitedLegendKeepsTheLowestValuesInValueOrder) {
   EXPECT_EQ(swatches[2], colours[2]);
 }
 
-// The grey view: each pixel its raw value, no rings, and a legend naming the values, so that 1 to 3,
-// all but black on screen, read apart from 0.
-TEST(StencilView, GreyPictureKeepsTheRawValuesAndNamesThemInItsLegend) {
-  Image s(600, 40, 1);  // wide enough for the five entries in one row
+// The grey view: the values present stretched so that the largest is white (v x 255 / 4 here,
+// rounded: counts of 1 to 4 would be black to the eye as grey levels 1 to 4), no rings, and a
+// legend naming the values.
+TEST(StencilView, GreyPictureStretchesTheValuesToWhiteAndNamesThemInItsLegend) {
+  Image s(700, 40, 1);  // wide enough for the rule and the five entries in one row
   for (int y = 0; y < 40; ++y)
-    for (int x = 0; x < 600; ++x) *s.at(x, y) = static_cast<std::uint8_t>(x < 300 ? 0 : y < 10 ? 1 : y < 20 ? 2 : 3);
+    for (int x = 0; x < 700; ++x) *s.at(x, y) = static_cast<std::uint8_t>(x < 300 ? 0 : y < 10 ? 1 : y < 20 ? 2 : 3);
   *s.at(10, 20) = 4;  // a rare value: no ring in the grey view
   const Image pic = stencilRamp(s, {.grey = true});
   ASSERT_GT(pic.height, s.height);
+  const std::array<int, 5> level = {0, 64, 128, 191, 255};  // (v x 255 + 2) / 4
   for (int y = 0; y < s.height; ++y)
-    for (int x = 0; x < s.width; ++x) ASSERT_EQ(pic.at(x, y)[0], *s.at(x, y)) << x << "," << y;
+    for (int x = 0; x < s.width; ++x) ASSERT_EQ(pic.at(x, y)[0], level[*s.at(x, y)]) << x << "," << y;
   const auto swatches = firstRowSwatches(pic, s.height);
-  const std::vector<std::array<std::uint8_t, 3>> want = {{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {3, 3, 3}, {4, 4, 4}};
+  // 4's swatch, white, reads as the legend's white digits to firstRowSwatches.
+  const std::vector<std::array<std::uint8_t, 3>> want = {{0, 0, 0}, {64, 64, 64}, {128, 128, 128}, {191, 191, 191}};
   EXPECT_EQ(swatches, want);
 }
 

@@ -7,7 +7,8 @@ usage: screen_text.py status BEFORE.png AFTER.png X0 MIN_PX
          MIN_PX high (the UI scale's text), and the run starts in the window's upper half
        screen_text.py legend SHOT.png PX
          the stencil legend's digits: the lowest run of rows holding white pixels (the legend's
-         last row of digits, white on its grey band) is exactly PX high (10 px x the UI scale)
+         last row of digits, white on its grey band) is exactly PX high (5 dots of the window's
+         legendDot: the panel's 13 px text x the UI scale)
 Prints what it measured; exits 1 when the check fails.
 """
 import os
