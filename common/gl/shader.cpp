@@ -104,11 +104,17 @@ WebGlShader glslForWebGl(const std::string& source, bool clipDistance, int clipP
   // Line by line, so the line numbers stay; an initialiser is cut from its line.
   static const std::regex initialised(R"(^(\s*uniform\s+(float|int)\s+(\w+))\s*=\s*([-+0-9.eE]+)\s*;(.*)$)");
   static const std::regex mainOpens(R"(^(\s*void\s+main\s*\(\s*(void)?\s*\)\s*\{)(.*)$)");
+  // A desktop extension asked for where present (": enable"): WebGL has none of the ARB ones, and
+  // GLSL ES allows no #extension after the precision lines. Its macro stays undefined, so the
+  // shader's #ifdef takes the path without it.
+  static const std::regex desktopExtension(R"(^\s*#\s*extension\s+GL_ARB_\w+\s*:\s*enable\b.*$)");
   std::istringstream lines(body);
   std::string line;
   while (std::getline(lines, line)) {
     std::smatch m;
-    if (std::regex_match(line, m, initialised)) {
+    if (std::regex_match(line, desktopExtension)) {
+      line.clear();
+    } else if (std::regex_match(line, m, initialised)) {
       out.defaults.push_back({m[3].str(), m[2].str() == "int", std::strtod(m[4].str().c_str(), nullptr)});
       line = m[1].str() + ";" + m[5].str();
     } else if (clipPlanesIn > 0 && std::regex_match(line, m, mainOpens)) {

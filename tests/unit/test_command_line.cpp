@@ -269,6 +269,16 @@ TEST(ShaderForWebGl, ClipDistanceWithoutTheExtensionBecomesADiscard) {
   EXPECT_EQ(glslForWebGl("#version 330 core\nvoid main() { gl_ClipDistance[0] = 1.0; }\n").clipPlanes, 0);
 }
 
+// A desktop extension asked for where present is dropped (WebGL has none of the ARB ones, and GLSL ES
+// wants no #extension after the precision lines); its line stays, blank. One that is required stays,
+// so the compile error names it.
+TEST(ShaderForWebGl, DesktopExtensionsAskedForWherePresentAreDropped) {
+  const std::string es = glslForWebGl(
+      "#version 330 core\n#extension GL_ARB_shader_stencil_export : enable\n"
+      "#extension GL_ARB_shader_image_load_store : require\nvoid main() {}\n").source;
+  EXPECT_EQ(es.substr(es.find("#line 2\n") + 8), "\n#extension GL_ARB_shader_image_load_store : require\nvoid main() {}\n");
+}
+
 TEST(ShaderForWebGl, IntegerSamplersGetAPrecision) {
   const std::string es = glslForWebGl("#version 330 core\nuniform usampler2D ids;\nvoid main() {}\n").source;
   EXPECT_EQ(es.substr(es.find("precision highp sampler2D;\n") + 27), "precision highp usampler2D;\n#line 2\n"
