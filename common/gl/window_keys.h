@@ -16,7 +16,7 @@ inline constexpr WindowKey kWindowKeys[] = {
     {"R", "reset the camera"},
     {"V", "next variant"},
     {"P, shift+P", "step forward, back through the passes"},
-    {"Tab", "cycle the colour, stencil, grey (the stencil values stretched to grey, the largest white), bit-plane and depth views"},
+    {"Tab", "cycle the colour, stencil, grey (the stencil values stretched to grey, the largest white), bit-plane and depth views (shift: back)"},
     {"Space", "pause"},
     {"S, shift+S", "save a screenshot of the picture, of the whole window with the panel"},
     {"PgDn, PgUp", "next, previous lesson (in the course lessons/run opens)"},

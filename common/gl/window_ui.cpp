@@ -310,7 +310,7 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
       say(st, st.paused ? "paused" : "running");
       return;
     case GLFW_KEY_TAB:
-      st.view = static_cast<View>((static_cast<int>(st.view) + 1) % kViews);
+      st.view = static_cast<View>((static_cast<int>(st.view) + ((mods & GLFW_MOD_SHIFT) ? kViews - 1 : 1)) % kViews);
       sayView(st);
       return;
     case GLFW_KEY_P:
@@ -843,6 +843,7 @@ void applyUiScale(float scale) {
   ImGuiStyle& style = ImGui::GetStyle();
   style = ImGuiStyle();
   ImGui::StyleColorsDark(&style);
+  style.Colors[ImGuiCol_PopupBg].w = 1.0f;  // an open list hides the panel under it (projected, see-through reads as noise)
   style.ScaleAllSizes(scale);
 }
 
