@@ -814,7 +814,11 @@ void readObjectLine(LineReader& line, SceneObject& object) {
         glm::rotate(glm::mat4(1.0f), glm::radians(degrees), line.direction("the axis")) * object.model;
   } else if (key == "scale") {
     glm::vec3 s(line.number("the scale"));
-    if (!line.done()) s = glm::vec3(s.x, line.number("the scale y"), line.number("the scale z"));
+    if (!line.done()) {  // y, then z: a function's arguments are read in no set order
+      const float y = line.number("the scale y");
+      const float z = line.number("the scale z");
+      s = glm::vec3(s.x, y, z);
+    }
     if (s.x == 0.0f || s.y == 0.0f || s.z == 0.0f)
       line.fail("expected a scale other than 0 (it flattens the object)");
     object.model = glm::scale(glm::mat4(1.0f), s) * object.model;

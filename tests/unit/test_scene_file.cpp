@@ -418,6 +418,13 @@ TEST(SceneFile, DirectionsOfAnyFiniteLengthAreTheirDirection) {
             "test.scene:3: expected the direction towards the light to be a direction, got 0 0 0");
 }
 
+// A scale's three numbers are x, y and z in the order the file gives them, whichever order the
+// compiler evaluates a call's arguments in (GCC and clang differ).
+TEST(SceneFile, AScaleReadsXYAndZInTheFilesOrder) {
+  const Scene s = parseScene(std::string(header) + "object a box\n  scale 0.8 1.6 1.2\n", "x.scene");
+  expectNear(s.objects[0].model, glm::scale(glm::mat4(1.0f), glm::vec3(0.8f, 1.6f, 1.2f)));
+}
+
 // parseScene reads OBJ files through the reader it is given; the default reads the disk.
 TEST(SceneFile, OBJFilesComeFromTheReaderGiven) {
   const auto reader = [](const std::filesystem::path& path) -> std::string {
