@@ -177,6 +177,45 @@ void resetFrameState(unsigned framebuffer, glm::ivec2 size, const GlFeatures& fe
     glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);  // GL's default clip-space depth
 }
 
+Scene readScene(const CommandLine& cl, LessonInfo& info) {
+  Scene scene;
+  try {
+    scene = loadScene(*cl.scene, cl.shadowHours.has_value());  // a profile may start or end at night
+  } catch (const SceneError& e) {
+    throw UsageError(e.what());
+  }
+  try {
+    info.camera = orbitCameraOf(scene.camera);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(cl.scene->string() + ": " + e.what());
+  }
+  for (Variant& v : info.variants) v.camera.reset();
+  if (!info.sceneLightOption.empty()) {
+    for (Option& o : info.options)
+      if (o.name == info.sceneLightOption) {
+        o.min = 0;
+        o.max = static_cast<int>(scene.lights.size()) - 1;
+        o.value = std::min(o.value, o.max);
+      }
+    try {
+      optionsFor(info, cl.variant, cl.settings);
+    } catch (const UsageError& e) {
+      throw UsageError(std::string(e.what()) + " (" + cl.scene->string() + " has " +
+                       std::to_string(scene.lights.size()) +
+                       (scene.lights.size() == 1 ? " light)" : " lights)"));
+    }
+  }
+  return scene;
+}
+
+// What preparing the scene's casters did and found (welded seams, dropped triangles), a line each.
+void sayWhatTheCastersNeeded(const CommandLine& cl, const Scene& scene) {
+  if (cl.quiet) return;
+  for (const SceneObject& o : scene.objects)
+    for (const std::string& m : o.caster.report.messages)
+      std::cerr << cl.scene->string() << ": object '" << o.name << "': " << m << "\n";
+}
+
 // ---- headless run -----------------------------------------------------------------------
 // The browser runs a lesson its own way (web_run.cpp): a page, not a command line's files.
 #ifndef __EMSCRIPTEN__
@@ -615,47 +654,6 @@ int finishRun(Session& s, const Image& colour, const Image& stencil, const std::
 }
 
 namespace {
-
-// Reads --scene's file before anything is made; its camera replaces the lesson's and the variants',
-// its lights bound the option that picks one (LessonInfo::sceneLightOption).
-Scene readScene(const CommandLine& cl, LessonInfo& info) {
-  Scene scene;
-  try {
-    scene = loadScene(*cl.scene, cl.shadowHours.has_value());  // a profile may start or end at night
-  } catch (const SceneError& e) {
-    throw UsageError(e.what());
-  }
-  try {
-    info.camera = orbitCameraOf(scene.camera);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(cl.scene->string() + ": " + e.what());
-  }
-  for (Variant& v : info.variants) v.camera.reset();
-  if (!info.sceneLightOption.empty()) {
-    for (Option& o : info.options)
-      if (o.name == info.sceneLightOption) {
-        o.min = 0;
-        o.max = static_cast<int>(scene.lights.size()) - 1;
-        o.value = std::min(o.value, o.max);
-      }
-    try {
-      optionsFor(info, cl.variant, cl.settings);
-    } catch (const UsageError& e) {
-      throw UsageError(std::string(e.what()) + " (" + cl.scene->string() + " has " +
-                       std::to_string(scene.lights.size()) +
-                       (scene.lights.size() == 1 ? " light)" : " lights)"));
-    }
-  }
-  return scene;
-}
-
-// What preparing the scene's casters did and found (welded seams, dropped triangles), a line each.
-void sayWhatTheCastersNeeded(const CommandLine& cl, const Scene& scene) {
-  if (cl.quiet) return;
-  for (const SceneObject& o : scene.objects)
-    for (const std::string& m : o.caster.report.messages)
-      std::cerr << cl.scene->string() << ": object '" << o.name << "': " << m << "\n";
-}
 
 int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, bool readsScenes, int argc,
                char** argv) {

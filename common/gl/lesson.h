@@ -136,6 +136,7 @@ struct LessonInfo {
 };
 
 class PassRecorder;
+struct CommandLine;
 
 // What a lesson sees while it renders one frame.
 class Frame {
@@ -269,5 +270,13 @@ using SceneLessonFactory = std::function<std::unique_ptr<Lesson>(const Scene* fr
 // variants'; a file that cannot be read is one line "FILE:LINE: ...", exit 2) and, where the
 // lesson makes shadow claims (LessonInfo::shadows), --mask-out DIR (Frame::shadowMask).
 int runSceneLesson(const LessonInfo&, const SceneLessonFactory&, int argc, char** argv);
+
+// Reads --scene's file (cl.scene, set) before the lesson is made: its camera replaces `info`'s and
+// the variants', its lights bound the option that picks one (LessonInfo::sceneLightOption). Throws
+// UsageError, one line naming the file (and line) and what is wrong.
+Scene readScene(const CommandLine& cl, LessonInfo& info);
+// What preparing the scene's casters did and found (welded seams, dropped triangles), a line each
+// on stderr naming cl.scene's file, unless cl.quiet.
+void sayWhatTheCastersNeeded(const CommandLine& cl, const Scene& scene);
 
 }  // namespace stencil

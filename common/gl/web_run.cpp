@@ -3,11 +3,16 @@
 // file makes the session on the page's canvas, shows each frame there, and answers the page's
 // calls: play, pause, a frame at a time, a variant, an option, a view (colour, the stencil as the
 // window's ramp, in grey or as bit planes, the depth as the window shows it), a pass to stop after
-// (the pass stepper), and the snapshot the tests read.
-// A bad setting is one line on the page, as on the command line, and nothing is drawn.
+// (the pass stepper), the orbit camera, a scene file (the scene lessons), and the snapshot the
+// tests read.
+// A bad setting is one line on the page, as on the command line, and nothing is drawn; a scene file
+// that cannot be read is one line on the page, and the lesson keeps its last good scene.
 #ifdef __EMSCRIPTEN__
 #include <emscripten/emscripten.h>
 
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -22,6 +27,7 @@
 
 // The page's side (common/web/lesson.js): StencilPage.
 EM_JS(void, stencil_page_error, (const char* message), { StencilPage.error(UTF8ToString(message)); });
+EM_JS(void, stencil_page_refused, (const char* message), { StencilPage.refused(UTF8ToString(message)); });
 EM_JS(void, stencil_page_image, (const char* id, const unsigned char* png, int size),
       { StencilPage.image(UTF8ToString(id), HEAPU8.slice(png, png + size)); });
 EM_JS(void, stencil_page_ready, (const char* lesson), { StencilPage.ready(JSON.parse(UTF8ToString(lesson))); });
@@ -33,9 +39,14 @@ namespace stencil {
 namespace {
 
 struct WebRun {
-  LessonInfo info;
-  LessonFactory make;
-  CommandLine commandLine;
+  LessonInfo declared;  // the lesson's own declarations
+  SceneLessonFactory make;
+  bool readsScenes = false;
+  CommandLine commandLine;  // the page's, with the scene file the session was made with
+  // The session's scene (nullptr: the lesson's own) and the declarations it was made with (a
+  // scene's camera and lights change them): both outlive the session, which refers to them.
+  std::unique_ptr<Scene> scene;
+  std::unique_ptr<LessonInfo> info;
   std::unique_ptr<Session> session;
   bool playing = false;
   double time = 0;           // the frame's time, seconds
@@ -49,13 +60,24 @@ struct WebRun {
 std::unique_ptr<WebRun> run;
 
 void fail(const std::string& message) {
-  std::cerr << run->info.id << ": " << message << "\n";
+  std::cerr << run->declared.id << ": " << message << "\n";
   stencil_page_error(message.c_str());
+}
+
+// The scene files a scene lesson offers (embedded at /scenes by common/web/web.cmake), relative to
+// it, sorted.
+std::vector<std::string> sceneFiles() {
+  std::vector<std::string> files;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator("/scenes", error))
+    if (entry.path().extension() == ".scene") files.push_back(entry.path().lexically_relative("/scenes").string());
+  std::sort(files.begin(), files.end());
+  return files;
 }
 
 // What the page's controls are made from: the lesson's own declarations.
 std::string lessonJson(const WebRun& r) {
-  const LessonInfo& info = r.info;
+  const LessonInfo& info = *r.info;
   nlohmann::ordered_json options = nlohmann::ordered_json::array();
   for (const Option& o : r.session->options)
     options.push_back({{"name", o.name}, {"help", o.help}, {"value", o.value}, {"min", o.min}, {"max", o.max}});
@@ -72,7 +94,12 @@ std::string lessonJson(const WebRun& r) {
                                 {"time", r.time},
                                 {"size", {r.session->framebuffer->width(), r.session->framebuffer->height()}},
                                 {"renderer", f.renderer},
-                                {"features", f.summary()}}
+                                {"features", f.summary()},
+                                {"readsScenes", r.readsScenes},
+                                {"scene", r.commandLine.scene ? r.commandLine.scene->string() : ""},
+                                {"scenes", r.readsScenes ? sceneFiles() : std::vector<std::string>{}},
+                                {"orbit", {r.session->camera.azimuthDeg, r.session->camera.elevationDeg,
+                                           r.session->camera.distance}}}
       .dump();
 }
 
@@ -165,24 +192,68 @@ void tick() {
 }
 
 // What the browser cannot do of what the lesson does on the desktop, said in the page's log.
-void sayWhatIsMissing(bool sceneLesson) {
-  const std::string id = run->info.id;
-  std::cerr << id << ": not in the browser: --stats and its counts (WebGL 2's occlusion queries only say"
-            << " whether any sample passed), --depth-out\n";
-  if (sceneLesson)
-    std::cerr << id << ": not in the browser yet: scene files (--scene); the lesson draws its built-in scene\n";
+void sayWhatIsMissing() {
+  std::cerr << run->declared.id << ": not in the browser: --stats and its counts (WebGL 2's occlusion queries"
+            << " only say whether any sample passed), --depth-out\n";
 }
 
-int runWeb(const LessonInfo& info, const LessonFactory& make, int argc, char** argv, bool sceneLesson) {
+// The session for the scene file `path` (empty: the lesson's own scene), keeping the variant and
+// options the page has. The file is read and the options checked before the running session goes,
+// so that a bad file leaves it as it was (UsageError, the one line the command line gives).
+void startSession(const std::optional<std::filesystem::path>& path) {
+  WebRun& r = *run;
+  CommandLine cl = r.commandLine;
+  cl.scene = path;
+  if (r.session) {
+    cl.variant = r.session->variant;
+    cl.settings.clear();
+    for (const Option& o : r.session->options) cl.settings.emplace_back(o.name, o.value);
+  }
+  auto info = std::make_unique<LessonInfo>(r.declared);
+  std::unique_ptr<Scene> scene;
+  if (path) scene = std::make_unique<Scene>(readScene(cl, *info));
+  if (info->refuseOptions) {
+    const std::vector<Option> options = optionsFor(*info, cl.variant, cl.settings);
+    const std::string why = info->refuseOptions({options, cl.settings, scene.get()});
+    if (!why.empty()) throw UsageError(why);
+  }
+  if (scene) sayWhatTheCastersNeeded(cl, *scene);
+  if (r.pictureTexture) {  // the canvas's objects go with the context
+    glDeleteTextures(1, &r.pictureTexture);
+    glDeleteFramebuffers(1, &r.pictureFbo);
+    r.pictureTexture = r.pictureFbo = 0;
+  }
+  r.session.reset();
+  r.commandLine = cl;
+  r.info = std::move(info);
+  r.scene = std::move(scene);
+  const Scene* fromFile = r.scene.get();
+  r.session = std::make_unique<Session>(*r.info, [make = r.make, fromFile] { return make(fromFile); },
+                                        r.commandLine, Backend::Web);
+}
+
+int runWeb(const LessonInfo& info, const SceneLessonFactory& make, int argc, char** argv, bool readsScenes) {
   run = std::make_unique<WebRun>();
-  run->info = info;
+  run->declared = info;
   run->make = make;
+  run->readsScenes = readsScenes;
   const bool ok = guarded([&] {
-    run->commandLine = parseCommandLine(run->info, argc, argv);
-    run->session = std::make_unique<Session>(run->info, run->make, run->commandLine, Backend::Web);
+    const CommandLine cl = parseCommandLine(run->declared, argc, argv);
+    if (cl.scene && !readsScenes)
+      throw UsageError("--scene: " + info.id + " draws only its own scene; the scene lessons read scene files");
+    run->commandLine = cl;
+    try {
+      startSession(cl.scene);
+    } catch (const UsageError& e) {
+      if (!cl.scene) throw;
+      // The URL's scene file cannot be read: said on the page, and the lesson's own scene drawn.
+      std::cerr << run->declared.id << ": " << e.what() << "\n";
+      stencil_page_refused(e.what());
+      startSession(std::nullopt);
+    }
     const GlFeatures& f = run->session->context->features();
-    std::cerr << run->info.id << ": " << f.renderer << ", " << f.version << "; " << f.summary() << "\n";
-    sayWhatIsMissing(sceneLesson);
+    std::cerr << run->declared.id << ": " << f.renderer << ", " << f.version << "; " << f.summary() << "\n";
+    sayWhatIsMissing();
     renderAndShow(run->commandLine.time);
     stencil_page_ready(lessonJson(*run).c_str());
   });
@@ -192,12 +263,11 @@ int runWeb(const LessonInfo& info, const LessonFactory& make, int argc, char** a
 }  // namespace
 
 int runLesson(const LessonInfo& info, const LessonFactory& factory, int argc, char** argv) {
-  return runWeb(info, factory, argc, argv, false);
+  return runWeb(info, [factory](const Scene*) { return factory(); }, argc, argv, false);
 }
 
-// Scene files in the browser are not read yet: the lesson draws its built-in scene.
 int runSceneLesson(const LessonInfo& info, const SceneLessonFactory& factory, int argc, char** argv) {
-  return runWeb(info, [factory] { return factory(nullptr); }, argc, argv, true);
+  return runWeb(info, factory, argc, argv, true);
 }
 
 }  // namespace stencil
@@ -281,6 +351,54 @@ EMSCRIPTEN_KEEPALIVE int stencil_web_variant(const char* name) {
              : 1;
 }
 
+// The orbit camera turned by `azimuth` and `elevation` degrees (the elevation held within 89 degrees
+// of level) and its distance multiplied by `zoom` (held within 0.5-80 world units), as the window's
+// drag and wheel do, then the current frame again.
+EMSCRIPTEN_KEEPALIVE void stencil_web_orbit(double azimuth, double elevation, double zoom) {
+  if (!run || !run->session || !std::isfinite(azimuth) || !std::isfinite(elevation) || !std::isfinite(zoom) ||
+      zoom <= 0)
+    return;
+  stencil::OrbitCamera& c = run->session->camera;
+  c.azimuthDeg = static_cast<float>(std::remainder(c.azimuthDeg + azimuth, 360.0));
+  c.elevationDeg = std::clamp(static_cast<float>(c.elevationDeg + elevation), -89.0f, 89.0f);
+  c.distance = std::clamp(static_cast<float>(c.distance * zoom), 0.5f, 80.0f);
+  stencil::guarded([] { stencil::renderAndShow(run->time); });
+}
+
+// The orbit camera where it stands now: azimuth and elevation in degrees, distance in world units.
+EMSCRIPTEN_KEEPALIVE double stencil_web_orbit_value(int which) {
+  if (!run || !run->session) return 0;
+  const stencil::OrbitCamera& c = run->session->camera;
+  return which == 0 ? c.azimuthDeg : which == 1 ? c.elevationDeg : c.distance;
+}
+
+// A scene file (a path in the program's files: /scenes/..., or one the page wrote from a file the
+// reader dropped; empty: the lesson's own scene) in place of the current one. Returns 0, or 1 after
+// saying why on the page, the lesson keeping its last good scene.
+EMSCRIPTEN_KEEPALIVE int stencil_web_scene(const char* path) {
+  if (!run || !run->session) return 1;
+  if (!run->readsScenes) {
+    stencil_page_refused((run->declared.id + " draws only its own scene; the scene lessons read scene files").c_str());
+    return 1;
+  }
+  const std::optional<std::filesystem::path> previous = run->commandLine.scene;
+  try {
+    stencil::startSession(*path ? std::optional<std::filesystem::path>(path) : std::nullopt);
+    stencil::renderAndShow(run->time);
+    stencil_page_ready(stencil::lessonJson(*run).c_str());
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << run->declared.id << ": " << e.what() << "\n";
+    stencil_page_refused(e.what());
+  }
+  if (!run->session)  // the new session failed after the old one went: the last good scene again
+    stencil::guarded([&previous] {
+      stencil::startSession(previous);
+      stencil::renderAndShow(run->time);
+    });
+  return 1;
+}
+
 // An option's value (checked against its declared range), then the current frame again.
 EMSCRIPTEN_KEEPALIVE int stencil_web_option(const char* name, int value) {
   if (!run || !run->session) return 1;
@@ -289,7 +407,7 @@ EMSCRIPTEN_KEEPALIVE int stencil_web_option(const char* name, int value) {
            std::vector<std::pair<std::string, int>> settings;
            for (const stencil::Option& o : s.options)
              settings.emplace_back(o.name, o.name == name ? value : o.value);
-           s.options = stencil::optionsFor(run->info, s.variant, settings);
+           s.options = stencil::optionsFor(*run->info, s.variant, settings);
            stencil::renderAndShow(run->time);
          })
              ? 0

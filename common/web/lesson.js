@@ -3,8 +3,10 @@
 // made from the lesson's own declarations (LessonInfo), which the program hands over when ready.
 //
 // The URL: ?variant=V&time=T&size=WxH&set=NAME:VALUE,NAME:VALUE&paused=1&view=stencil&pass=3
-// (&without=EXT,EXT: below)
-// (view: colour, stencil, grey, bits or depth; pass: the frame as it was after that pass, 1 the first)
+// &orbit=AZIMUTH,ELEVATION,DISTANCE&scene=csg/drilled-box.scene (&without=EXT,EXT: below)
+// (view: colour, stencil, grey, bits or depth; pass: the frame as it was after that pass, 1 the first;
+// orbit: the camera in degrees and world units; scene: one of the scene files the scene lessons
+// offer, tests/scenes/ in the repository. A scene file dropped on the page is not in the URL.)
 // The snapshot contract (the tests'): with &snapshot=1 the frame at that time and size is drawn,
 // then <img id="snapshot-colour"> and <img id="snapshot-stencil"> (PNG data URLs; the stencil one
 // grey byte a pixel, as --stencil-out's .raw.png) are added to the page and document.title is
@@ -18,6 +20,7 @@ const statusLine = document.getElementById('status');
 const logBox = document.getElementById('log');
 let lesson = null;  // the lesson's declarations, once its program is ready
 let failed = false;
+let refusedAt = -Infinity;  // performance.now() of the last refusal
 let passLabels = [];  // the passes the last frame ran
 const views = ['colour', 'stencil', 'grey', 'bits', 'depth'];
 
@@ -35,6 +38,8 @@ function commandLine() {
   if (params.has('set'))
     for (const setting of params.get('set').split(',').filter(s => s))
       args.push('--set', setting.replace(':', '='));
+  // One of the offered files, by its name under /scenes; anything else is the program's to refuse.
+  if (params.has('scene')) args.push('--scene', '/scenes/' + params.get('scene').replace(/^\/+/, ''));
   return args;
 }
 
@@ -63,6 +68,18 @@ window.StencilPage = {
     log('error: ' + message);
     if (snapshot) document.title = 'snapshot-error: ' + message;
   },
+  // What the reader asked for could not be done (a scene file that cannot be read); the lesson
+  // keeps running as it was.
+  refused(message) {
+    statusLine.textContent = message;
+    statusLine.className = 'error';
+    refusedAt = performance.now();
+    log('refused: ' + message);
+    if (snapshot) {
+      failed = true;
+      document.title = 'snapshot-error: ' + message;
+    }
+  },
   image(id, bytes) {
     const img = document.createElement('img');
     img.id = id;
@@ -71,15 +88,21 @@ window.StencilPage = {
     document.getElementById('live').appendChild(img);
   },
   ready(info) {
+    const first = lesson === null;
     lesson = info;  // the program has logged its renderer and features
+    if (first) applyUrlOrbit();
     if (snapshot) return;
     makeControls(info);
+    if (first) setUpOrbit();
   },
   frame(time, passes) {
     if (failed) return;
     passLabels = passes;
-    statusLine.className = '';
-    statusLine.textContent = 't = ' + time.toFixed(2) + ' s; passes: ' + passes.join(', ');
+    // A refusal stays in view for 6 s before the frame's line takes its place again.
+    if (performance.now() - refusedAt > 6000) {
+      statusLine.className = '';
+      statusLine.textContent = 't = ' + time.toFixed(2) + ' s; passes: ' + passes.join(', ');
+    }
     showPass();
     const timeBox = document.getElementById('time');
     if (timeBox && document.activeElement !== timeBox) timeBox.value = time.toFixed(2);
@@ -161,6 +184,7 @@ function makeControls(info) {
       updateUrl({view: view.value === 'colour' ? null : view.value});
   });
   label('view', view);
+  if (info.readsScenes) makeSceneControls(info, label);
   // The pass stepper: the frame as it was after each pass that ran, forward and back.
   const stepper = document.createElement('span');
   stepper.id = 'stepper';
@@ -209,6 +233,139 @@ function makeControls(info) {
   }
   setPlaying(playing);
   showPass();
+}
+
+// The scene lessons' scene: one of the files they offer, or a scene file (with its OBJ meshes)
+// picked or dropped on the canvas.
+function makeSceneControls(info, label) {
+  const scene = document.createElement('select');
+  scene.id = 'scene';
+  const current = info.scene.startsWith('/scenes/') ? info.scene.slice('/scenes/'.length) : info.scene;
+  const names = ['', ...info.scenes];
+  if (current && !info.scenes.includes(current)) names.push(current);
+  for (const name of names) {
+    const option = document.createElement('option');
+    option.value = name;
+    option.textContent = name === '' ? "(the lesson's own)" : name.startsWith('/dropped/') ? name.split('/').pop() : name;
+    option.selected = name === current;
+    scene.appendChild(option);
+  }
+  scene.addEventListener('change', () => {
+    if (scene.value.startsWith('/dropped/')) return;
+    if (Module.ccall('stencil_web_scene', 'number', ['string'], [scene.value && '/scenes/' + scene.value]) === 0)
+      updateUrl({scene: scene.value || null, orbit: null});
+  });
+  label('scene', scene, 'a scene file of tests/scenes/, or drop a .scene file and its .obj meshes on the picture');
+  const pick = document.createElement('input');
+  pick.id = 'scene-file';
+  pick.type = 'file';
+  pick.multiple = true;
+  pick.accept = '.scene,.obj';
+  pick.addEventListener('change', () => loadSceneFiles(pick.files));
+  label('scene file', pick, 'a .scene file and the .obj meshes it names');
+}
+
+const maxSceneFileBytes = 64 * 1024 * 1024;
+let droppedCount = 0;
+
+// Writes the picked or dropped files into the program's files and loads the scene file among them:
+// each .obj beside the scene file, and again where the scene's `mesh PATH` names a file of that name
+// (relative to the scene file, as the scene format reads it), so that a scene naming meshes/x.obj
+// finds the x.obj dropped with it. What cannot be loaded is one line on the page; the lesson keeps
+// its scene.
+async function loadSceneFiles(fileList) {
+  const files = Array.from(fileList);
+  if (!lesson || !lesson.readsScenes) return StencilPage.refused(lessonId + ' draws only its own scene; the scene lessons read scene files');
+  const other = files.find(f => !/\.(scene|obj)$/i.test(f.name));
+  if (other) return StencilPage.refused(other.name + ': not a scene file (.scene) or an OBJ mesh (.obj)');
+  const scenes = files.filter(f => /\.scene$/i.test(f.name));
+  if (scenes.length !== 1)
+    return StencilPage.refused(scenes.length ? scenes.length + ' scene files: drop one at a time, with its .obj meshes'
+                                             : 'no scene file (.scene) among the files: drop one with its .obj meshes');
+  const large = files.find(f => f.size > maxSceneFileBytes);
+  if (large) return StencilPage.refused(large.name + ': ' + (large.size / 1048576).toFixed(0) + ' MiB, more than the page reads (64 MiB)');
+  const folder = '/dropped/' + ++droppedCount + '/scene';
+  const FS = Module.FS;
+  FS.mkdirTree(folder);
+  const sceneBytes = new Uint8Array(await scenes[0].arrayBuffer());
+  FS.writeFile(folder + '/' + scenes[0].name, sceneBytes);
+  const meshPaths = [...new TextDecoder().decode(sceneBytes).matchAll(/(?:^|\s)mesh\s+(\S+)/gm)].map(m => m[1]);
+  for (const mesh of files.filter(f => /\.obj$/i.test(f.name))) {
+    const bytes = new Uint8Array(await mesh.arrayBuffer());
+    const places = [mesh.name, ...meshPaths.filter(p => !p.startsWith('/') && p.split('/').pop() === mesh.name)];
+    for (const place of places) {
+      const path = normalise(folder + '/' + place);
+      FS.mkdirTree(path.slice(0, path.lastIndexOf('/')));
+      FS.writeFile(path, bytes);
+    }
+  }
+  const path = folder + '/' + scenes[0].name;
+  if (Module.ccall('stencil_web_scene', 'number', ['string'], [path]) === 0) {
+    updateUrl({scene: null, orbit: null});
+    log('scene: ' + scenes[0].name + ' (' + files.length + (files.length === 1 ? ' file' : ' files') + '), not in the URL');
+  }
+}
+
+// A path with its '.' and '..' steps taken (never above the root).
+function normalise(path) {
+  const parts = [];
+  for (const part of path.split('/')) {
+    if (part === '..') parts.pop();
+    else if (part && part !== '.') parts.push(part);
+  }
+  return '/' + parts.join('/');
+}
+
+// Orbit and zoom as in the window: a drag on the picture turns the camera 0.4 degrees a pixel, the
+// wheel moves it 10% nearer or farther a notch. The URL keeps the camera (&orbit=) once it stops.
+function orbitValue() {
+  return [0, 1, 2].map(i => Module._stencil_web_orbit_value(i));
+}
+function keepOrbitInUrl() {
+  updateUrl({orbit: orbitValue().map(v => Number(v.toFixed(2))).join(',')});
+}
+function setUpOrbit() {
+  const canvas = document.getElementById('canvas');
+  let drag = null;
+  canvas.addEventListener('pointerdown', e => {
+    if (e.button !== 0) return;
+    drag = {x: e.clientX, y: e.clientY};
+    canvas.setPointerCapture(e.pointerId);
+  });
+  canvas.addEventListener('pointermove', e => {
+    if (!drag) return;
+    Module._stencil_web_orbit(-(e.clientX - drag.x) * 0.4, (e.clientY - drag.y) * 0.4, 1);
+    drag = {x: e.clientX, y: e.clientY};
+  });
+  const end = () => {
+    if (!drag) return;
+    drag = null;
+    keepOrbitInUrl();
+  };
+  canvas.addEventListener('pointerup', end);
+  canvas.addEventListener('pointercancel', end);
+  let wheelTimer = 0;
+  canvas.addEventListener('wheel', e => {
+    e.preventDefault();
+    Module._stencil_web_orbit(0, 0, Math.pow(0.9, -Math.sign(e.deltaY)));
+    clearTimeout(wheelTimer);
+    wheelTimer = setTimeout(keepOrbitInUrl, 300);
+  }, {passive: false});
+  canvas.addEventListener('dragover', e => e.preventDefault());
+  canvas.addEventListener('drop', e => {
+    e.preventDefault();
+    loadSceneFiles(e.dataTransfer.files);
+  });
+}
+
+// The URL's camera (&orbit=AZIMUTH,ELEVATION,DISTANCE), as turns and a zoom from where it stands.
+function applyUrlOrbit() {
+  if (!params.has('orbit')) return;
+  const wanted = params.get('orbit').split(',').map(Number);
+  if (wanted.length !== 3 || !wanted.every(Number.isFinite) || wanted[2] <= 0)
+    return StencilPage.refused('orbit=' + params.get('orbit') + ': expected AZIMUTH,ELEVATION,DISTANCE (degrees, degrees, world units > 0)');
+  const [azimuth, elevation, distance] = orbitValue();
+  Module._stencil_web_orbit(wanted[0] - azimuth, wanted[1] - elevation, wanted[2] / distance);
 }
 
 let currentPass = 0;  // 0: the whole frame; N: as it was after the N-th pass that ran

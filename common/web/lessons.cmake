@@ -4,3 +4,9 @@ set(STENCIL_WEB_LESSONS 00-stencil-basics 01-planar-reflection 02-stenciled-mirr
     04-projected-shadows 05-light-blocking 06-coplanar-decals 07-shadow-volumes-invert
     08-shadow-volumes-counting 09-cutout-extrusion 10-soft-shadows 11-halo 12-dissolve 13-depth-complexity
     14-csg 15-robust-zfail 16-fast-robust-shadows)
+# The scene files each scene lesson offers on its page (globs under tests/scenes/), embedded at
+# /scenes with the meshes they name (tests/scenes/meshes).
+set(STENCIL_WEB_SCENES_13-depth-complexity *.scene hard/*.scene)
+set(STENCIL_WEB_SCENES_14-csg csg/*.scene opencsg/*.scene)
+set(STENCIL_WEB_SCENES_15-robust-zfail *.scene hard/*.scene)
+set(STENCIL_WEB_SCENES_16-fast-robust-shadows *.scene hard/*.scene)

@@ -100,10 +100,20 @@ foreach(i RANGE ${last})
   set_target_properties(${id} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${STENCIL_SITE} SUFFIX .js)
   target_link_options(${id} PRIVATE
     -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 -sALLOW_MEMORY_GROWTH=1 -sENVIRONMENT=web
-    -sEXPORTED_RUNTIME_METHODS=ccall
+    -sEXPORTED_RUNTIME_METHODS=ccall,FS
     "SHELL:--embed-file ${PROJECT_SOURCE_DIR}/shaders@/shaders")
   file(GLOB_RECURSE shader_files CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/shaders/*)
   set_property(TARGET ${id} APPEND PROPERTY LINK_DEPENDS ${shader_files})
+  if(DEFINED STENCIL_WEB_SCENES_${id})
+    set(scene_globs ${STENCIL_WEB_SCENES_${id}} meshes/*.obj)
+    list(TRANSFORM scene_globs PREPEND ${PROJECT_SOURCE_DIR}/tests/scenes/)
+    file(GLOB scene_files CONFIGURE_DEPENDS ${scene_globs})
+    foreach(file IN LISTS scene_files)
+      file(RELATIVE_PATH name ${PROJECT_SOURCE_DIR}/tests/scenes ${file})
+      target_link_options(${id} PRIVATE "SHELL:--embed-file ${file}@/scenes/${name}")
+    endforeach()
+    set_property(TARGET ${id} APPEND PROPERTY LINK_DEPENDS ${scene_files})
+  endif()
 
   stencil_web_title(${id} title)
   set(previous "")

@@ -13,6 +13,7 @@
 //     share, and the work buffer gets the primitive alone (its colour is the pass stepper's).
 // None of this changes a pixel; each saves draws or llvmpipe's per-state-change copies.
 #include <algorithm>
+#include <iostream>
 #include <limits>
 
 #include "csg_lesson.h"
@@ -120,7 +121,9 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
     for (int& i : batch) i = shown[static_cast<std::size_t>(i)];
   f.count("batches", nb);
 
-  std::vector<GLuint> queries(cycles > 1 ? nb : 0, 0);
+  // Without queries whose result the frame can wait for (the browser's come after it) every cycle
+  // runs and every batch is merged.
+  std::vector<GLuint> queries(cycles > 1 && f.features.samplesPassed ? nb : 0, 0);
   std::vector<bool> moved(nb, true), onSurface(nb, queries.empty());
   f.ownOcclusionQueries([&] {
     if (!queries.empty()) glGenQueries(static_cast<GLsizei>(nb), queries.data());

@@ -94,6 +94,7 @@ class Csg final : public Lesson {
 
   // ---- drawing.cpp: the work buffer and the draws ------------------------------------------------
   void workBuffer(glm::ivec2 size);
+  void clearWork();
   CsgTree prepare(const CsgScene& scene, double time);
   static bool subtracted(const CsgProduct& p, int primitive);
   // Depth: white, for the depth and stencil alone; Selected: lit, the primitive written beside the

@@ -2,6 +2,7 @@
 // the full-screen quads that push pixels to the far plane.
 #include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
 #include <stdexcept>
 #include <tuple>
 
@@ -14,12 +15,12 @@ namespace stencil::csg_lesson {
 Csg::Csg(const Scene* fromFile)
     : fromFile_(fromFile),
       light_("common/light.vert", "common/light.frag"),
-      depthOnly_("common/light.vert", "common/flat.frag"),
+      depthOnly_("common/light.vert", "14-csg/flat.frag"),
       merge_("14-csg/merge.vert", "14-csg/merge.frag"),
       select_("14-csg/merge.vert", "14-csg/select.frag"),
       keep_("common/flat.vert", "14-csg/keep.frag"),
       resolve_("common/flat.vert", "14-csg/resolve.frag"),
-      flat_("common/flat.vert", "common/flat.frag"),
+      flat_("common/flat.vert", "14-csg/flat.frag"),
       quadMesh_(makeScreenQuad()),
       quad_(quadMesh_) {
   if (fromFile_ && fromFile_->csg.empty())
@@ -97,6 +98,14 @@ void Csg::workBuffer(glm::ivec2 size) {
     throw std::runtime_error("14-csg: the nearest layers' buffer is incomplete");
 }
 
+// Clears the bound work buffer: its colour (draw buffer 0) to the background, its depth and stencil.
+// The primitive texture keeps what it had: glClear's colour bit on an integer texture is undefined
+// on the desktop and an error in WebGL 2.
+void Csg::clearWork() {
+  glClearBufferfv(GL_COLOR, 0, glm::value_ptr(kBackground));
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+}
+
 // The scene's meshes on the GPU (made again only when the expression changes), its models at
 // `time` (the spin), and its expression parsed.
 CsgTree Csg::prepare(const CsgScene& scene, double time) {
@@ -158,8 +167,8 @@ void Csg::setLighting(const Program& p, const Frame& f) const {
 
 void Csg::drawDepth(int i) {
   depthOnly_.set("model", models_[static_cast<std::size_t>(i)]);
-  frontFace(i);
   depthOnly_.set("colour", glm::vec4(1.0f));
+  frontFace(i);
   meshes_[static_cast<std::size_t>(i)]->draw();
 }
 void Csg::drawShaded(int i) {

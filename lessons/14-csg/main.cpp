@@ -239,7 +239,7 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glStencilMask(0xFF);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  clearWork();
   // 1. Select: the layer-th fragment drawn at each pixel. Every fragment INCRs the stencil, and
   // only the one that finds it EQUAL to layer writes its depth and its primitive (and its
   // colour: the work buffer's colour is no part of the method, it shows the surface to the pass
@@ -251,7 +251,7 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
   glStencilFunc(GL_EQUAL, std::min(layer, 255), 0xFF);
   glStencilOp(GL_INCR, GL_INCR, GL_INCR);  // each fragment counts, passing or not
   std::uint64_t selected = 1;
-  if (f.on("queries")) {
+  if (f.on("queries") && f.features.samplesPassed) {  // (the browser's come after the frame)
     f.ownOcclusionQueries([&] {
       GLuint query = 0;
       glGenQueries(1, &query);
@@ -387,7 +387,7 @@ int Csg::targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glStencilMask(0xFF);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  clearWork();
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the count alone
   glDisable(GL_DEPTH_TEST);                             // every fragment counts
   glEnable(GL_STENCIL_TEST);
@@ -396,6 +396,8 @@ int Csg::targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<
   drawTargets(p, targets, Paint::Depth);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   int low = 0, high = 255;  // the largest count lies in [low, high]
+  LayerCounts read;  // where no query can be waited for within the frame (the browser's)
+  if (!counts && !f.features.samplesPassed) counts = &read;
   if (counts) {  // read once, for the bisection's 8 queries
     *counts = readCounts();
     low = high = counts->largest;
@@ -469,7 +471,7 @@ void Csg::scsEnter(Frame& f, const CsgProduct& p, bool automatic) {
   glEnable(GL_STENCIL_TEST);
   glStencilMask(0xFF);
   glClearDepth(nearest());  // the furthest front face wins: start at the near plane
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  clearWork();
   glClearDepth(depth_.farthest);
   // No primitive yet: where no front face is drawn the depth stays at the near plane, and the
   // merge must not take it for a surface.
