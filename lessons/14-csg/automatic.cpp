@@ -149,7 +149,7 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
           glScissor(within.x, within.y, within.width, within.height);
         }
       }
-      if (queries.empty()) break;
+      if (queries.empty()) continue;  // no query to say the cycle changed nothing: all of them run
       bool any = false;
       for (std::size_t b = 0; b < nb; ++b) {
         GLuint64 samples = 0;
