@@ -74,7 +74,9 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
 //     the whole answer and it needs no query;
 //   - a batch that moved nothing, and meets no batch that moved something, since it was last
 //     drawn would move nothing again: it is left out of the next cycle;
-//   - a subtracted primitive whose batch never moved the surface is nowhere on it: not merged.
+//   - a subtracted primitive whose batch never moved the surface is nowhere on it: not merged;
+//     where the cycles waited on queries, the work buffer's primitives, read back once, say which
+//     subtracted primitives the surface shows, and only those are merged.
 void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& within) {
   scsEnter(f, p, true);
   std::vector<int> shown;  // the subtracted primitives on screen (one off screen moves nothing)
@@ -165,10 +167,33 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
   std::vector<bool> merged(models_.size(), false);  // in the product's order, as main.cpp merges
   for (std::size_t b = 0; b < nb; ++b)
     for (int s : batches[b]) merged[static_cast<std::size_t>(s)] = onSurface[b];
+  if (!queries.empty()) {
+    // The cycles have waited on their queries already: one more wait, for the work buffer's
+    // primitives, leaves out of the merge every target the surface does not show, where a batch
+    // that moved in some cycle may since have been moved past everywhere (on the cube rack, most).
+    const std::vector<bool> shownThere = primitivesIn(within);
+    for (int s : p.subtracted) merged[static_cast<std::size_t>(s)] = shownThere[static_cast<std::size_t>(s)];
+  }
   std::vector<int> targets = p.intersected;
   for (int s : p.subtracted)
     if (merged[static_cast<std::size_t>(s)]) targets.push_back(s);
   mergeIntoFrame(f, p, targets);
+}
+
+// Per primitive, whether the work buffer's primitive texture names it within r (read back: a
+// wait for the work buffer's passes). Where a pass sent the surface to the far plane the texture
+// may still name the primitive it held before: more than the surface shows, never less.
+std::vector<bool> Csg::primitivesIn(const ScissorRect& r) const {
+  std::vector<GLuint> ids(static_cast<std::size_t>(r.width) * static_cast<std::size_t>(r.height), 0);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, work_);
+  glReadBuffer(GL_COLOR_ATTACHMENT1);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(r.x, r.y, r.width, r.height, GL_RED_INTEGER, GL_UNSIGNED_INT, ids.data());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  std::vector<bool> there(models_.size(), false);
+  for (GLuint id : ids)
+    if (id > 0 && id <= there.size()) there[id - 1] = true;
+  return there;
 }
 
 // Layered Goldfeather on one product with a concave primitive (main.cpp's steps), with these

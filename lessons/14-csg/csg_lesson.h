@@ -82,6 +82,7 @@ class Csg final : public Lesson {
   void scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& within);
   void layeredByLayerRects(Frame& f, const CsgProduct& p, const ScissorRect& within);
   static LayerCounts readCounts();
+  std::vector<bool> primitivesIn(const ScissorRect& r) const;
   struct Footprint {
     Aabb box;
     BoundingSphere sphere;
