@@ -23,11 +23,8 @@
 namespace stencil::csg_lesson {
 
 void Csg::automatic(Frame& f, const SumOfProducts& sop) {
-  f.count("products", sop.products.size());
-  f.count("literals", sop.literals());
-  for (const char* name : {"scs_products", "goldfeather_products", "cycles", "subtraction_passes", "clip_passes",
-                           "merge_passes"})
-    f.count(name, 0);
+  startCounts(f, sop, {"scs_products", "goldfeather_products", "cycles", "subtraction_passes", "clip_passes",
+                       "merge_passes"});
   workBuffer(f.size);
   mergeInputs();
   // The work buffer's colour is the pass stepper's picture alone: here only the primitives are
@@ -237,19 +234,9 @@ void Csg::keepNearest(Frame& f) {
   glDepthFunc(depth_.less);
   glDepthMask(GL_TRUE);
   glDisable(GL_STENCIL_TEST);  // (nearest_ has none)
-  glActiveTexture(GL_TEXTURE1);
-  glBindTexture(GL_TEXTURE_2D, workPrimitive_);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, workDepth_);
-  keep_.set("transform", glm::mat4(1.0f));
-  const bool culling = glIsEnabled(GL_CULL_FACE);
-  glDisable(GL_CULL_FACE);
-  quad_.draw();
-  if (culling) glEnable(GL_CULL_FACE);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  glActiveTexture(GL_TEXTURE1);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  glActiveTexture(GL_TEXTURE0);
+  bindSurface(workDepth_, workPrimitive_);
+  fullScreen(keep_);
+  bindSurface(0, 0);
   glEnable(GL_STENCIL_TEST);
   f.pass("keep");
 }

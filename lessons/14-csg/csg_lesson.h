@@ -1,9 +1,12 @@
 // Lesson 14's parts: the scene as the lesson keeps it, and the lesson itself. main.cpp defines the
 // algorithms, in the papers' order (the demo's two solids, Goldfeather, layered Goldfeather, SCS);
-// drawing.cpp the work buffer and the draws they share; classroom.cpp what surrounds them (the
-// lesson's own scenes, cameras, options and variants); oracle.cpp the check against the CSG ray
-// cast. None of the last two changes what a pixel shows.
+// drawing.cpp the work buffer, the frame's state and the draws they share; classroom.cpp what
+// surrounds them (the lesson's own scenes, cameras, options, variants and --stats counts);
+// oracle.cpp the check against the CSG ray cast. None of the last two changes what a pixel shows.
 #pragma once
+#include <cstdint>
+#include <functional>
+#include <initializer_list>
 #include <memory>
 #include <string>
 #include <vector>
@@ -112,8 +115,17 @@ class Csg final : public Lesson {
   void mergeInputs();
   void frontFace(int i);
   void drawQuad(const glm::vec4& colour, float depth);
+  void beginFrame(const Frame& f);
+  void endFrame(const Frame& f);
+  static std::uint64_t samplesPassed(Frame& f, const std::function<void()>& draw);
+  static void bindSurface(GLuint depth, GLuint primitive);
+  void fullScreen(const Program& program);
   // Back to the far plane, the background's colour where colour is written.
   void farQuad() { drawQuad(kBackground, static_cast<float>(depth_.farthest)); }
+
+  // ---- classroom.cpp: the --stats counts a method starts from (0, so every frame has them all) -----
+  static void startCounts(Frame& f, const SumOfProducts& sop, std::initializer_list<const char*> zeros,
+                          bool beforePruning = false);
 
   // ---- oracle.cpp: the test hook -----------------------------------------------------------------
   void checkAgainstRayCast(Frame& f, const CsgScene& scene, const CsgTree& tree, int method) const;
