@@ -115,7 +115,8 @@ class Csg final : public Lesson {
   void mergeInputs();
   void frontFace(int i);
   void drawQuad(const glm::vec4& colour, float depth);
-  void beginFrame(const Frame& f);
+  void beginFrame(const Frame& f, bool clearNow);
+  void clearFrame();
   void endFrame(const Frame& f);
   static std::uint64_t samplesPassed(Frame& f, const std::function<void()>& draw);
   static void bindSurface(GLuint depth, GLuint primitive);
@@ -147,6 +148,7 @@ class Csg final : public Lesson {
   // The automatic method's layered products: the nearest of their layers' surfaces, as above.
   GLuint nearest_ = 0, nearestDepth_ = 0, nearestPrimitive_ = 0;
   glm::ivec2 workSize_{0};
+  bool frameToClear_ = false;  // the frame not yet cleared this frame (clearFrame)
   bool mirroredView_ = false;  // this frame's view matrix has a negative determinant
   DepthMapping depth_;         // this frame's: its depth tests, clear depth and projection
   // The depth tests that pass behind the buffer's depth (GL_GREATER, GL_GEQUAL; GL_LESS and

@@ -214,15 +214,17 @@ void Csg::frontFace(int i) {
 // cleared or drawn: reversed float depth where the driver has clip control (lesson 15), so that a
 // depth is held to about 2^-24 of its distance at every distance and surfaces far from a near plane
 // close to the eye stay apart; nearer is then greater, and every comparison flips (depth_.less,
-// further()...).
-void Csg::beginFrame(const Frame& f) {
+// further()...). The frame is cleared here for the two-solid method, which draws straight into it;
+// the others clear it at their first merge (clearFrame).
+void Csg::beginFrame(const Frame& f, bool clearNow) {
   mirroredView_ = glm::determinant(glm::mat3(f.view)) < 0.0f;  // a mirrored camera
   depth_ = depthMappingOf(f);
   if (f.reversedDepth) glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // window depth = clip z / w
   glClearColor(kBackground.r, kBackground.g, kBackground.b, kBackground.a);
   glClearDepth(depth_.farthest);
   glClearStencil(0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  frameToClear_ = true;
+  if (clearNow) clearFrame();
   glEnable(GL_CULL_FACE);  // a solid's front or back faces, one at a time
   const glm::mat4 viewProjection = depth_.projection * f.view;
   for (Program* p : {&light_, &depthOnly_, &merge_, &select_}) p->set("viewProjection", viewProjection);
@@ -231,8 +233,12 @@ void Csg::beginFrame(const Frame& f) {
   light_.set("twoSided", 1);  // back faces kept are seen from inside: lit on that side
 }
 
-// GL's defaults again, after a method.
+// GL's defaults again, after a method (and the frame cleared, where no product was merged).
 void Csg::endFrame(const Frame& f) {
+  if (frameToClear_) {
+    glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer());
+    clearFrame();
+  }
   glDisable(GL_CULL_FACE);
   glFrontFace(GL_CCW);
   glCullFace(GL_BACK);
@@ -242,6 +248,22 @@ void Csg::endFrame(const Frame& f) {
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glClearDepth(1.0);
   if (f.reversedDepth) glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);  // GL's default mapping
+}
+
+// The bound frame cleared (the background, the far plane, stencil 0), once a frame. Left until the
+// first merge, the clear begins the merge's own batch of draws: llvmpipe then sets each tile to the
+// clear values as it starts it, where a clear before the work buffer's passes is a batch of its own,
+// every tile written out and read back in.
+void Csg::clearFrame() {
+  if (!frameToClear_) return;
+  frameToClear_ = false;
+  const bool scissor = glIsEnabled(GL_SCISSOR_TEST);
+  glDisable(GL_SCISSOR_TEST);  // the whole frame, whatever the product's rectangle
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+  glStencilMask(0xFF);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  if (scissor) glEnable(GL_SCISSOR_TEST);
 }
 
 // The samples that pass in draw (an occlusion query; a wait for its result), outside the pass

@@ -64,7 +64,7 @@ void Csg::render(Frame& f) {
   const int method = f.option("method");
   const CsgScene scene = sceneFor(f, fromFile_);
   const CsgTree tree = prepare(scene, f.time);
-  beginFrame(f);  // the depth mapping (reversed float depth where it can be), the frame cleared
+  beginFrame(f, method == kTwoSolids);  // the depth mapping (reversed float depth where it can be)
 
   if (method == kTwoSolids)
     twoSolidsMethod(f, scene, f.option("op"));
@@ -306,6 +306,7 @@ void Csg::mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& 
   glDepthMask(GL_TRUE);
   glStencilMask(0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  clearFrame();  // the first merge of the frame
   const bool twoPasses = hasFeature(f.features, Feature::StencilExport);
   if (twoPasses) {
     // 1. The surface's depth where it is the nearest yet, its primitive in the stencil.
