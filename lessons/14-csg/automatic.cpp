@@ -72,8 +72,8 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
 //   - a batch that moved nothing, and meets no batch that moved something, since it was last
 //     drawn would move nothing again: it is left out of the next cycle;
 //   - a subtracted primitive whose batch never moved the surface is nowhere on it: not merged;
-//     where the cycles waited on queries, the work buffer's primitives, read back once, say which
-//     subtracted primitives the surface shows, and only those are merged.
+//     where the cycles waited on queries, the work buffer's primitives, read back after the last
+//     wait, say which subtracted primitives the surface shows, and only those are merged.
 void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& within) {
   scsEnter(f, p, true);
   std::vector<int> shown;  // the subtracted primitives on screen (one off screen moves nothing)
@@ -121,6 +121,7 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
 
   std::vector<GLuint> queries(cycles > 1 ? nb : 0, 0);
   std::vector<bool> moved(nb, true), onSurface(nb, queries.empty());
+  std::vector<bool> shownThere;  // with queries, the primitives the work buffer names (primitivesIn)
   f.ownOcclusionQueries([&] {
     if (!queries.empty()) glGenQueries(static_cast<GLsizei>(nb), queries.data());
     glStencilMask(0xFF);
@@ -156,7 +157,11 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
       }
       if (!any) break;
     }
-    if (!queries.empty()) glDeleteQueries(static_cast<GLsizei>(nb), queries.data());
+    if (!queries.empty()) {
+      // The last cycle's queries have waited for every subtraction: the read waits for nothing more.
+      shownThere = primitivesIn(within);
+      glDeleteQueries(static_cast<GLsizei>(nb), queries.data());
+    }
   });
   f.pass("subtract");
   clipByIntersection(f, p);
@@ -165,10 +170,10 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
   for (std::size_t b = 0; b < nb; ++b)
     for (int s : batches[b]) merged[static_cast<std::size_t>(s)] = onSurface[b];
   if (!queries.empty()) {
-    // The cycles have waited on their queries already: one more wait, for the work buffer's
-    // primitives, leaves out of the merge every target the surface does not show, where a batch
-    // that moved in some cycle may since have been moved past everywhere (on the cube rack, most).
-    const std::vector<bool> shownThere = primitivesIn(within);
+    // The work buffer's primitives, read where the cycles had already waited, leave out of the merge
+    // every target the surface does not show, where a batch that moved in some cycle may since have
+    // been moved past everywhere (on the cube rack, most). The clip since only sent pixels to the far
+    // plane: it shows no primitive the read did not find.
     for (int s : p.subtracted) merged[static_cast<std::size_t>(s)] = shownThere[static_cast<std::size_t>(s)];
   }
   std::vector<int> targets = p.intersected;
@@ -178,7 +183,7 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
 }
 
 // Per primitive, whether the work buffer's primitive texture names it within r (read back: a
-// wait for the work buffer's passes). Where a pass sent the surface to the far plane the texture
+// wait for the work buffer's passes, where any are still to run). Where a pass sent the surface to the far plane the texture
 // may still name the primitive it held before: more than the surface shows, never less.
 std::vector<bool> Csg::primitivesIn(const ScissorRect& r) const {
   std::vector<GLuint> ids(static_cast<std::size_t>(r.width) * static_cast<std::size_t>(r.height), 0);
