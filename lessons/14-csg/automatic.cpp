@@ -23,8 +23,9 @@
 namespace stencil::csg_lesson {
 
 void Csg::automatic(Frame& f, const SumOfProducts& sop) {
-  startCounts(f, sop, {"scs_products", "goldfeather_products", "cycles", "subtraction_passes", "clip_passes",
-                       "merge_passes"});
+  startCounts(f, sop,
+              {"scs_products", "goldfeather_products", "cycles", "subtraction_passes", "clip_passes",
+               "merge_passes"});
   workBuffer(f.size);
   mergeInputs();
   // The work buffer's colour is the pass stepper's picture alone: here only the primitives are
@@ -182,9 +183,10 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
   mergeIntoFrame(f, p, targets);
 }
 
-// Per primitive, whether the work buffer's primitive texture names it within r (read back: a
-// wait for the work buffer's passes, where any are still to run). Where a pass sent the surface to the far plane the texture
-// may still name the primitive it held before: more than the surface shows, never less.
+// Per primitive, whether the work buffer's primitive texture names it within r (read back: a wait
+// for the work buffer's passes, where any are still to run). Where a pass sent the surface to the
+// far plane the texture may still name the primitive it held before: more than the surface shows,
+// never less.
 std::vector<bool> Csg::primitivesIn(const ScissorRect& r) const {
   std::vector<GLuint> ids(static_cast<std::size_t>(r.width) * static_cast<std::size_t>(r.height), 0);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, work_);
