@@ -392,6 +392,15 @@ void copyRectangle(const std::uint8_t* rows, int fullWidth, int bytes, GLint x, 
 void webReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type, void* pixels) {
   const bool stencil = format == GL_STENCIL_INDEX && type == GL_UNSIGNED_BYTE;
   const bool depth = format == GL_DEPTH_COMPONENT && type == GL_FLOAT;
+  if (format == GL_RED_INTEGER && type == GL_UNSIGNED_INT) {
+    // WebGL 2 always reads an unsigned integer buffer as RGBA_INTEGER (RED_INTEGER only where the
+    // implementation says so): the red of each.
+    std::vector<GLuint> rgba(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+    glReadPixels(x, y, width, height, GL_RGBA_INTEGER, GL_UNSIGNED_INT, rgba.data());
+    auto* red = static_cast<GLuint*>(pixels);
+    for (std::size_t i = 0; i * 4 < rgba.size(); ++i) red[i] = rgba[i * 4];
+    return;
+  }
   if (!stencil && !depth) {
     glReadPixels(x, y, width, height, format, type, pixels);
     return;

@@ -55,7 +55,8 @@ inline void webTexImage2D(GLenum target, GLint level, GLint internalFormat, GLsi
 }
 #define glTexImage2D webTexImage2D
 // glReadPixels of GL_STENCIL_INDEX or GL_DEPTH_COMPONENT (GL_UNSIGNED_BYTE, GL_FLOAT), which
-// WebGL 2 refuses, read by drawing them into a colour buffer (common/gl/framebuffer.cpp); any
+// WebGL 2 refuses, read by drawing them into a colour buffer (common/gl/framebuffer.cpp);
+// GL_RED_INTEGER (GL_UNSIGNED_INT) read as GL_RGBA_INTEGER, the one WebGL 2 always takes; any
 // other format is WebGL's own glReadPixels.
 namespace stencil {
 void webReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type, void* pixels);

@@ -24,11 +24,9 @@
 namespace stencil::csg_lesson {
 
 void Csg::automatic(Frame& f, const SumOfProducts& sop) {
-  f.count("products", sop.products.size());
-  f.count("literals", sop.literals());
-  for (const char* name : {"scs_products", "goldfeather_products", "cycles", "subtraction_passes", "clip_passes",
-                           "merge_passes"})
-    f.count(name, 0);
+  startCounts(f, sop,
+              {"scs_products", "goldfeather_products", "cycles", "subtraction_passes", "clip_passes",
+               "merge_passes"});
   workBuffer(f.size);
   mergeInputs();
   // The work buffer's colour is the pass stepper's picture alone: here only the primitives are
@@ -75,7 +73,9 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
 //     the whole answer and it needs no query;
 //   - a batch that moved nothing, and meets no batch that moved something, since it was last
 //     drawn would move nothing again: it is left out of the next cycle;
-//   - a subtracted primitive whose batch never moved the surface is nowhere on it: not merged.
+//   - a subtracted primitive whose batch never moved the surface is nowhere on it: not merged;
+//     where the cycles waited on queries, the work buffer's primitives, read back after the last
+//     wait, say which subtracted primitives the surface shows, and only those are merged.
 void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& within) {
   scsEnter(f, p, true);
   std::vector<int> shown;  // the subtracted primitives on screen (one off screen moves nothing)
@@ -125,6 +125,7 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
   // runs and every batch is merged.
   std::vector<GLuint> queries(cycles > 1 && f.features.samplesPassed ? nb : 0, 0);
   std::vector<bool> moved(nb, true), onSurface(nb, queries.empty());
+  std::vector<bool> shownThere;  // with queries, the primitives the work buffer names (primitivesIn)
   f.ownOcclusionQueries([&] {
     if (!queries.empty()) glGenQueries(static_cast<GLsizei>(nb), queries.data());
     glStencilMask(0xFF);
@@ -160,7 +161,11 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
       }
       if (!any) break;
     }
-    if (!queries.empty()) glDeleteQueries(static_cast<GLsizei>(nb), queries.data());
+    if (!queries.empty()) {
+      // The last cycle's queries have waited for every subtraction: the read waits for nothing more.
+      shownThere = primitivesIn(within);
+      glDeleteQueries(static_cast<GLsizei>(nb), queries.data());
+    }
   });
   f.pass("subtract");
   clipByIntersection(f, p);
@@ -168,10 +173,34 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
   std::vector<bool> merged(models_.size(), false);  // in the product's order, as main.cpp merges
   for (std::size_t b = 0; b < nb; ++b)
     for (int s : batches[b]) merged[static_cast<std::size_t>(s)] = onSurface[b];
+  if (!queries.empty()) {
+    // The work buffer's primitives, read where the cycles had already waited, leave out of the merge
+    // every target the surface does not show, where a batch that moved in some cycle may since have
+    // been moved past everywhere (on the cube rack, most). The clip since only sent pixels to the far
+    // plane: it shows no primitive the read did not find.
+    for (int s : p.subtracted) merged[static_cast<std::size_t>(s)] = shownThere[static_cast<std::size_t>(s)];
+  }
   std::vector<int> targets = p.intersected;
   for (int s : p.subtracted)
     if (merged[static_cast<std::size_t>(s)]) targets.push_back(s);
   mergeIntoFrame(f, p, targets);
+}
+
+// Per primitive, whether the work buffer's primitive texture names it within r (read back: a wait
+// for the work buffer's passes, where any are still to run). Where a pass sent the surface to the
+// far plane the texture may still name the primitive it held before: more than the surface shows,
+// never less.
+std::vector<bool> Csg::primitivesIn(const ScissorRect& r) const {
+  std::vector<GLuint> ids(static_cast<std::size_t>(r.width) * static_cast<std::size_t>(r.height), 0);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, work_);
+  glReadBuffer(GL_COLOR_ATTACHMENT1);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(r.x, r.y, r.width, r.height, GL_RED_INTEGER, GL_UNSIGNED_INT, ids.data());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  std::vector<bool> there(models_.size(), false);
+  for (GLuint id : ids)
+    if (id > 0 && id <= there.size()) there[id - 1] = true;
+  return there;
 }
 
 // Layered Goldfeather on one product with a concave primitive (main.cpp's steps), with these
@@ -215,19 +244,9 @@ void Csg::keepNearest(Frame& f) {
   glDepthFunc(depth_.less);
   glDepthMask(GL_TRUE);
   glDisable(GL_STENCIL_TEST);  // (nearest_ has none)
-  glActiveTexture(GL_TEXTURE1);
-  glBindTexture(GL_TEXTURE_2D, workPrimitive_);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, workDepth_);
-  keep_.set("transform", glm::mat4(1.0f));
-  const bool culling = glIsEnabled(GL_CULL_FACE);
-  glDisable(GL_CULL_FACE);
-  quad_.draw();
-  if (culling) glEnable(GL_CULL_FACE);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  glActiveTexture(GL_TEXTURE1);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  glActiveTexture(GL_TEXTURE0);
+  bindSurface(workDepth_, workPrimitive_);
+  fullScreen(keep_);
+  bindSurface(0, 0);
   glEnable(GL_STENCIL_TEST);
   f.pass("keep");
 }

@@ -137,6 +137,14 @@ CsgScene fileScene(const Scene& file, double time) {
 
 }  // namespace
 
+void Csg::startCounts(Frame& f, const SumOfProducts& sop, std::initializer_list<const char*> zeros,
+                      bool beforePruning) {
+  f.count("products", sop.products.size());
+  f.count("literals", sop.literals());
+  if (beforePruning) f.count("products_before_pruning", sop.productsBeforePruning);
+  for (const char* name : zeros) f.count(name, 0);
+}
+
 CsgScene sceneFor(const Frame& f, const Scene* fromFile) {
   const int method = f.option("method");
   if (fromFile && method == kTwoSolids)

@@ -1,9 +1,12 @@
 // Lesson 14's parts: the scene as the lesson keeps it, and the lesson itself. main.cpp defines the
 // algorithms, in the papers' order (the demo's two solids, Goldfeather, layered Goldfeather, SCS);
-// drawing.cpp the work buffer and the draws they share; classroom.cpp what surrounds them (the
-// lesson's own scenes, cameras, options and variants); oracle.cpp the check against the CSG ray
-// cast. None of the last two changes what a pixel shows.
+// drawing.cpp the work buffer, the frame's state and the draws they share; classroom.cpp what
+// surrounds them (the lesson's own scenes, cameras, options, variants and --stats counts);
+// oracle.cpp the check against the CSG ray cast. None of the last two changes what a pixel shows.
 #pragma once
+#include <cstdint>
+#include <functional>
+#include <initializer_list>
 #include <memory>
 #include <string>
 #include <vector>
@@ -82,6 +85,7 @@ class Csg final : public Lesson {
   void scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& within);
   void layeredByLayerRects(Frame& f, const CsgProduct& p, const ScissorRect& within);
   static LayerCounts readCounts();
+  std::vector<bool> primitivesIn(const ScissorRect& r) const;
   struct Footprint {
     Aabb box;
     BoundingSphere sphere;
@@ -112,8 +116,18 @@ class Csg final : public Lesson {
   void mergeInputs();
   void frontFace(int i);
   void drawQuad(const glm::vec4& colour, float depth);
+  void beginFrame(const Frame& f, bool clearNow);
+  void clearFrame();
+  void endFrame(const Frame& f);
+  static std::uint64_t samplesPassed(Frame& f, const std::function<void()>& draw);
+  static void bindSurface(GLuint depth, GLuint primitive);
+  void fullScreen(const Program& program);
   // Back to the far plane, the background's colour where colour is written.
   void farQuad() { drawQuad(kBackground, static_cast<float>(depth_.farthest)); }
+
+  // ---- classroom.cpp: the --stats counts a method starts from (0, so every frame has them all) -----
+  static void startCounts(Frame& f, const SumOfProducts& sop, std::initializer_list<const char*> zeros,
+                          bool beforePruning = false);
 
   // ---- oracle.cpp: the test hook -----------------------------------------------------------------
   void checkAgainstRayCast(Frame& f, const CsgScene& scene, const CsgTree& tree, int method) const;
@@ -135,6 +149,7 @@ class Csg final : public Lesson {
   // The automatic method's layered products: the nearest of their layers' surfaces, as above.
   GLuint nearest_ = 0, nearestDepth_ = 0, nearestPrimitive_ = 0;
   glm::ivec2 workSize_{0};
+  bool frameToClear_ = false;  // the frame not yet cleared this frame (clearFrame)
   bool mirroredView_ = false;  // this frame's view matrix has a negative determinant
   DepthMapping depth_;         // this frame's: its depth tests, clear depth and projection
   // The depth tests that pass behind the buffer's depth (GL_GREATER, GL_GEQUAL; GL_LESS and

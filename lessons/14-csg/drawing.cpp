@@ -1,6 +1,7 @@
 // Lesson 14's work buffer and draws: the scene's meshes on the GPU, the target faces of a product,
 // the full-screen quads that push pixels to the far plane.
 #include <algorithm>
+#include <functional>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <stdexcept>
@@ -216,6 +217,96 @@ void Csg::mergeInputs() {
 void Csg::frontFace(int i) {
   const bool mirrored = (glm::determinant(glm::mat3(models_[static_cast<std::size_t>(i)])) < 0.0f) != mirroredView_;
   glFrontFace(mirrored ? GL_CW : GL_CCW);
+}
+
+// The frame's state before a method draws. The depth mapping comes first, before anything is
+// cleared or drawn: reversed float depth where the driver has clip control (lesson 15), so that a
+// depth is held to about 2^-24 of its distance at every distance and surfaces far from a near plane
+// close to the eye stay apart; nearer is then greater, and every comparison flips (depth_.less,
+// further()...). The frame is cleared here for the two-solid method, which draws straight into it;
+// the others clear it at their first merge (clearFrame).
+void Csg::beginFrame(const Frame& f, bool clearNow) {
+  mirroredView_ = glm::determinant(glm::mat3(f.view)) < 0.0f;  // a mirrored camera
+  depth_ = depthMappingOf(f);
+  if (f.reversedDepth) glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // window depth = clip z / w
+  glClearColor(kBackground.r, kBackground.g, kBackground.b, kBackground.a);
+  glClearDepth(depth_.farthest);
+  glClearStencil(0);
+  frameToClear_ = true;
+  if (clearNow) clearFrame();
+  glEnable(GL_CULL_FACE);  // a solid's front or back faces, one at a time
+  const glm::mat4 viewProjection = depth_.projection * f.view;
+  for (Program* p : {&light_, &depthOnly_, &merge_, &select_}) p->set("viewProjection", viewProjection);
+  setLighting(light_, f);
+  setLighting(merge_, f);
+  light_.set("twoSided", 1);  // back faces kept are seen from inside: lit on that side
+}
+
+// GL's defaults again, after a method (and the frame cleared, where no product was merged).
+void Csg::endFrame(const Frame& f) {
+  if (frameToClear_) {
+    glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer());
+    clearFrame();
+  }
+  glDisable(GL_CULL_FACE);
+  glFrontFace(GL_CCW);
+  glCullFace(GL_BACK);
+  glDisable(GL_STENCIL_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glClearDepth(1.0);
+  if (f.reversedDepth) glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);  // GL's default mapping
+}
+
+// The bound frame cleared (the background, the far plane, stencil 0), once a frame. Left until the
+// first merge, the clear begins the merge's own batch of draws: llvmpipe then sets each tile to the
+// clear values as it starts it, where a clear before the work buffer's passes is a batch of its own,
+// every tile written out and read back in.
+void Csg::clearFrame() {
+  if (!frameToClear_) return;
+  frameToClear_ = false;
+  const bool scissor = glIsEnabled(GL_SCISSOR_TEST);
+  glDisable(GL_SCISSOR_TEST);  // the whole frame, whatever the product's rectangle
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+  glStencilMask(0xFF);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  if (scissor) glEnable(GL_SCISSOR_TEST);
+}
+
+// The samples that pass in draw (an occlusion query; a wait for its result), outside the pass
+// statistics' own count.
+std::uint64_t Csg::samplesPassed(Frame& f, const std::function<void()>& draw) {
+  GLuint64 n = 0;
+  f.ownOcclusionQueries([&] {
+    GLuint query = 0;
+    glGenQueries(1, &query);
+    glBeginQuery(GL_SAMPLES_PASSED, query);
+    draw();
+    glEndQuery(GL_SAMPLES_PASSED);
+    glGetQueryObjectui64v(query, GL_QUERY_RESULT, &n);
+    glDeleteQueries(1, &query);
+  });
+  return n;
+}
+
+// A product's surface as the merge, resolve and keep shaders read it: its depth texture on unit 0,
+// its primitive texture on unit 1 (0, 0: neither), unit 0 left active.
+void Csg::bindSurface(GLuint depth, GLuint primitive) {
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, primitive);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, depth);
+}
+
+// The full-screen quad through `program` (its transform the identity), whichever faces are culled.
+void Csg::fullScreen(const Program& program) {
+  program.set("transform", glm::mat4(1.0f));
+  const bool culling = glIsEnabled(GL_CULL_FACE);
+  glDisable(GL_CULL_FACE);
+  quad_.draw();
+  if (culling) glEnable(GL_CULL_FACE);
 }
 
 // A full-screen quad at window depth `depth` (0 near and 1 far; reversed, 1 near and 0 far, where

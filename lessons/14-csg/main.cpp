@@ -49,8 +49,8 @@
 // driver has clip control (lesson 15), every comparison flipped with it.
 // Reading order: render, the two solids, Goldfeather, layered Goldfeather (its depth complexity), SCS;
 // the automatic method (per product SCS or layered Goldfeather, OpenCSG's economies) is in
-// automatic.cpp, the work buffer and the draws in drawing.cpp, the scenes, cameras, options and variants in
-// classroom.cpp, the oracle's hook in oracle.cpp.
+// automatic.cpp, the work buffer, the frame's state and the draws in drawing.cpp, the scenes, cameras,
+// options, variants and --stats counts in classroom.cpp, the oracle's hook in oracle.cpp.
 
 #include <algorithm>
 #include <string>
@@ -64,24 +64,7 @@ void Csg::render(Frame& f) {
   const int method = f.option("method");
   const CsgScene scene = sceneFor(f, fromFile_);
   const CsgTree tree = prepare(scene, f.time);
-  mirroredView_ = glm::determinant(glm::mat3(f.view)) < 0.0f;  // a mirrored camera
-
-  // The depth mapping, before anything is cleared or drawn: reversed float depth where the driver
-  // has clip control (lesson 15), so that a depth is held to about 2^-24 of its distance at every
-  // distance and surfaces far from a near plane close to the eye stay apart; nearer is then
-  // greater, and every comparison below flips (depth_.less, further()...).
-  depth_ = depthMappingOf(f);
-  if (f.reversedDepth) glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // window depth = clip z / w
-  glClearColor(kBackground.r, kBackground.g, kBackground.b, kBackground.a);
-  glClearDepth(depth_.farthest);
-  glClearStencil(0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-  glEnable(GL_CULL_FACE);  // a solid's front or back faces, one at a time
-  const glm::mat4 viewProjection = depth_.projection * f.view;
-  for (Program* p : {&light_, &depthOnly_, &merge_, &select_}) p->set("viewProjection", viewProjection);
-  setLighting(light_, f);
-  setLighting(merge_, f);
-  light_.set("twoSided", 1);  // back faces kept are seen from inside: lit on that side
+  beginFrame(f, method == kTwoSolids);  // the depth mapping (reversed float depth where it can be)
 
   if (method == kTwoSolids)
     twoSolidsMethod(f, scene, f.option("op"));
@@ -91,16 +74,7 @@ void Csg::render(Frame& f) {
     automatic(f, normalize(tree));
   else
     goldfeather(f, normalize(tree), method == kLayered);
-
-  glDisable(GL_CULL_FACE);  // GL's defaults again
-  glFrontFace(GL_CCW);
-  glCullFace(GL_BACK);
-  glDisable(GL_STENCIL_TEST);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glClearDepth(1.0);
-  if (f.reversedDepth) glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);  // GL's default mapping
+  endFrame(f);  // GL's defaults again
   if (f.on("oracle")) checkAgainstRayCast(f, scene, tree, method);
 }
 
@@ -196,11 +170,7 @@ void Csg::twoSolidsMethod(Frame& f, const CsgScene&, int op) {
 // One product's surface, one target at a time (or, layered, all its targets at once), into
 // the work buffer's depth, trimmed there, merged into the frame.
 void Csg::goldfeather(Frame& f, const SumOfProducts& sop, bool layered) {
-  f.count("products", sop.products.size());
-  f.count("literals", sop.literals());
-  f.count("products_before_pruning", sop.productsBeforePruning);
-  for (const char* name : {"select_passes", "parity_passes", "far_passes", "merge_passes", "layers"})
-    f.count(name, 0);
+  startCounts(f, sop, {"select_passes", "parity_passes", "far_passes", "merge_passes", "layers"}, true);
   workBuffer(f.size);
   mergeInputs();
   for (const CsgProduct& product : sop.products) {
@@ -250,22 +220,12 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
   glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_EQUAL, std::min(layer, 255), 0xFF);
   glStencilOp(GL_INCR, GL_INCR, GL_INCR);  // each fragment counts, passing or not
+  const auto select = [&] { drawTargets(p, targets, automatic ? Paint::Primitive : Paint::Selected); };
   std::uint64_t selected = 1;
-  if (f.on("queries") && f.features.samplesPassed) {  // (the browser's come after the frame)
-    f.ownOcclusionQueries([&] {
-      GLuint query = 0;
-      glGenQueries(1, &query);
-      glBeginQuery(GL_SAMPLES_PASSED, query);
-      drawTargets(p, targets, automatic ? Paint::Primitive : Paint::Selected);
-      glEndQuery(GL_SAMPLES_PASSED);
-      GLuint64 n = 0;
-      glGetQueryObjectui64v(query, GL_QUERY_RESULT, &n);
-      glDeleteQueries(1, &query);
-      selected = n;
-    });
-  } else {
-    drawTargets(p, targets, automatic ? Paint::Primitive : Paint::Selected);
-  }
+  if (f.on("queries") && f.features.samplesPassed)  // (the browser's come after the frame)
+    selected = samplesPassed(f, select);
+  else
+    select();
   f.count("select_passes");
   f.pass("select");
   if (selected == 0) return false;
@@ -339,26 +299,20 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
 // then: the shader decides before the writes). Both give the same picture.
 void Csg::mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets, bool fromNearest) {
   glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer());
-  glActiveTexture(GL_TEXTURE1);
-  glBindTexture(GL_TEXTURE_2D, fromNearest ? nearestPrimitive_ : workPrimitive_);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, fromNearest ? nearestDepth_ : workDepth_);
+  bindSurface(fromNearest ? nearestDepth_ : workDepth_, fromNearest ? nearestPrimitive_ : workPrimitive_);
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_STENCIL_TEST);
   glDepthFunc(depth_.less);
   glDepthMask(GL_TRUE);
   glStencilMask(0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  clearFrame();  // the first merge of the frame
   const bool twoPasses = hasFeature(f.features, Feature::StencilExport);
   if (twoPasses) {
     // 1. The surface's depth where it is the nearest yet, its primitive in the stencil.
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glStencilFunc(GL_ALWAYS, 0, 0xFF);  // the shader's value (gl_FragStencilRefARB)
-    resolve_.set("transform", glm::mat4(1.0f));
-    const bool culling = glIsEnabled(GL_CULL_FACE);
-    glDisable(GL_CULL_FACE);
-    quad_.draw();
-    if (culling) glEnable(GL_CULL_FACE);
+    fullScreen(resolve_);
     // 2. Each target lit where the frame holds its tag at exactly its depth.
     glDepthFunc(GL_EQUAL);
     glDepthMask(GL_FALSE);
@@ -371,10 +325,7 @@ void Csg::mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& 
   }
   glDepthMask(GL_TRUE);
   glStencilMask(0xFF);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  glActiveTexture(GL_TEXTURE1);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  glActiveTexture(GL_TEXTURE0);
+  bindSurface(0, 0);
   f.count("merge_passes");
   f.pass("merge");
 }
@@ -402,24 +353,14 @@ int Csg::targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<
     *counts = readCounts();
     low = high = counts->largest;
   }
-  f.ownOcclusionQueries([&] {
-    GLuint query = 0;
-    glGenQueries(1, &query);
-    while (low < high) {
-      const int middle = (low + high) / 2;
-      glStencilFunc(GL_LESS, middle, 0xFF);  // passes where middle < count
-      glBeginQuery(GL_SAMPLES_PASSED, query);
-      drawQuad(glm::vec4(0.0f), 0.0f);
-      glEndQuery(GL_SAMPLES_PASSED);
-      GLuint64 n = 0;
-      glGetQueryObjectui64v(query, GL_QUERY_RESULT, &n);
-      if (n > 0)
-        low = middle + 1;
-      else
-        high = middle;
-    }
-    glDeleteQueries(1, &query);
-  });
+  while (low < high) {
+    const int middle = (low + high) / 2;
+    glStencilFunc(GL_LESS, middle, 0xFF);  // passes where middle < count
+    if (samplesPassed(f, [&] { drawQuad(glm::vec4(0.0f), 0.0f); }) > 0)
+      low = middle + 1;
+    else
+      high = middle;
+  }
   glEnable(GL_DEPTH_TEST);
   f.count("layers_counted", static_cast<std::uint64_t>(low));
   f.pass("layers");
@@ -434,10 +375,7 @@ int Csg::targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<
 // sequence moves the surface to its back face where the surface lies inside it, then the
 // intersection clips again; the surface is merged into the frame as Goldfeather's is.
 void Csg::scs(Frame& f, const SumOfProducts& sop) {
-  f.count("products", sop.products.size());
-  f.count("literals", sop.literals());
-  for (const char* name : {"sequence_length", "subtraction_passes", "clip_passes", "merge_passes"})
-    f.count(name, 0);
+  startCounts(f, sop, {"sequence_length", "subtraction_passes", "clip_passes", "merge_passes"});
   workBuffer(f.size);
   mergeInputs();
   for (const CsgProduct& p : sop.products) {
