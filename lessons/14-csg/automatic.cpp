@@ -121,9 +121,11 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
     for (int& i : batch) i = shown[static_cast<std::size_t>(i)];
   f.count("batches", nb);
 
-  // Without queries whose result the frame can wait for (the browser's come after it) every cycle
-  // runs and every batch is merged.
+  // Without queries whose result the frame can wait for (the browser's come after it) every batch
+  // is merged, and the depth read back after each cycle says when one changed nothing: a cycle is a
+  // function of the depth it starts from, so the next would change nothing either.
   std::vector<GLuint> queries(cycles > 1 && f.features.samplesPassed ? nb : 0, 0);
+  std::vector<float> depthBefore;
   std::vector<bool> moved(nb, true), onSurface(nb, queries.empty());
   std::vector<bool> shownThere;  // with queries, the primitives the work buffer names (primitivesIn)
   f.ownOcclusionQueries([&] {
@@ -150,7 +152,14 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
           glScissor(within.x, within.y, within.width, within.height);
         }
       }
-      if (queries.empty()) continue;  // no query to say the cycle changed nothing: all of them run
+      if (queries.empty()) {
+        if (cycle + 1 == cycles) break;
+        std::vector<float> depth(static_cast<std::size_t>(within.width) * static_cast<std::size_t>(within.height));
+        glReadPixels(within.x, within.y, within.width, within.height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+        if (depth == depthBefore) break;
+        depthBefore = std::move(depth);
+        continue;
+      }
       bool any = false;
       for (std::size_t b = 0; b < nb; ++b) {
         GLuint64 samples = 0;
