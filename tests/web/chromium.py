@@ -12,12 +12,14 @@ each ended by a NUL byte, from its fd 3 and writes its own to fd 4. One page (th
 tab) is attached to and driven. serve() is the one static server of the site the tests use: on
 127.0.0.1, a free port, for as long as the with block lasts.
 """
+import collections
 import contextlib
 import fcntl
 import functools
 import http.server
 import json
 import os
+import select
 import shutil
 import subprocess
 import tempfile
@@ -73,7 +75,7 @@ class Chromium:
         os.close(from_browser_w)
         self._buffer = b""
         self._next_id = 0
-        self._events = []
+        self.events = collections.deque(maxlen=200)  # the latest events the browser sent (console, page)
         self.session = None
         try:
             targets = self.send("Target.getTargets", session=False)["targetInfos"]
@@ -118,7 +120,8 @@ class Chromium:
 
     def _read(self, deadline):
         while b"\0" not in self._buffer:
-            if time.monotonic() > deadline:
+            left = deadline - time.monotonic()
+            if left <= 0 or not select.select([self._from_browser], [], [], left)[0]:
                 raise ChromiumError("no answer from the browser in time")
             chunk = os.read(self._from_browser, 1 << 16)
             if not chunk:
@@ -141,7 +144,7 @@ class Chromium:
                     raise ChromiumError(f"{method}: {answer['error'].get('message')}")
                 return answer.get("result", {})
             if "method" in answer:
-                self._events.append(answer)
+                self.events.append(answer)
 
     # What the tests do with a page.
     def open(self, url):
