@@ -35,7 +35,6 @@ import shlex
 import statistics
 import subprocess
 import sys
-import time
 
 import chromium
 
