@@ -17,6 +17,8 @@ Each page's tables are made in tests/docs/tables/NN.py (NN: the lesson), which n
 and its tables (TABLES: NAME -> a function returning the table's lines); they run lessons with
 --stats through stats() below, each run once for all tables. Counts only: no timing is ever
 measured here (times depend on the machine and its load; the pages say where theirs come from).
+tests/docs/tables/web.py is docs/web.md's table of frame times, written from the CSV that
+tests/web/web_frame_times.py's one run wrote: read, not measured, so that the page is the CSV's.
 """
 import difflib
 import importlib.util

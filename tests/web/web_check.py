@@ -1,43 +1,51 @@
 #!/usr/bin/env python3
-"""A lesson in the browser against the same lesson native: the snapshot contract's pictures from
-headless Chromium (SwiftShader's WebGL 2) beside --out and --stencil-out of the native program, at
-one size, time and variant.
+"""A lesson in the browser against the same lesson native: for every variant the lesson declares
+(its --list-variants, as the goldens), the snapshot contract's pictures from headless Chromium
+(SwiftShader's WebGL 2) beside --out and --stencil-out of the native program, at one size and time;
+with --depth, the page's depth view of the first variant beside --depth-out. One browser for all.
 
-    tests/web/web_check.py SITE NATIVE_EXE CHROMIUM OUT_DIR [--variant V] [--size WxH] [--time T]
-                           [--without EXT,EXT] [--cracks]
+    tests/web/web_check.py SITE NATIVE_EXE CHROMIUM OUT_DIR [--variant V]... [--size WxH] [--time T]
+                           [--without EXT,EXT] [--cracks [parity]] [--leave-out VARIANT NAME=VALUE...]... [--depth]
 
---cracks forgives lone pixels one count off in a uniform stretch of the native stencil (crack()), for
-the lessons whose shadow volumes reach infinity. --without hides those WebGL extensions from the page
-(its &without=), so that the browser takes the fallback it takes without them; the native lesson is
-the same.
+--variant: only those variants. --cracks forgives lone pixels one count off in a uniform stretch of
+the native stencil (crack()), for the lessons whose shadow volumes reach infinity; --cracks parity,
+lone pixels of any value (lesson 10: a parity bit a light); with either, lone colour pixels over
+tolerance (lone_colour()) too. --leave-out VARIANT NAME=VALUE...: in
+that variant the colour is not compared where the native frame drawn with one of those settings
+(--set NAME=VALUE) differs from the native frame, nor next to it: the layer that the setting
+changes. For a depth fight by design (lesson 04's z-fighting: the shadow at the ground's depth,
+whose winner is each rasterizer's own rounding) and a legend drawn from counts that include edge
+pixels (lesson 13's histogram). With no setting the variant's colour is not compared at all; its
+stencil always is. --without hides those WebGL extensions from the page (its &without=), so that
+the browser takes the fallback it takes without them; the native lesson is the same.
 
 The stencil must be the native one's except on edge pixels, judged as the ray-cast oracle judges
 them (common/geometry/shadow_oracle.cpp, onEdge): a pixel whose 3x3 neighbourhood in the native
 stencil holds another value. The colour likewise: every pixel within COLOUR_CHANNEL of the native
 one in each channel (the goldens' per-channel tolerance, common/gl/golden.h) except on an edge of
 the native picture, a pixel with a neighbour more than COLOUR_CHANNEL away from it (SwiftShader and
-llvmpipe cover a triangle's edge pixels each their own way). The pictures stay in OUT_DIR. Exit 0 pass, 1 fail, 2 bad arguments, 77 (skipped) when SITE has no page for the lesson.
+llvmpipe cover a triangle's edge pixels each their own way). The depth view (the page loaded with
+&view=depth&paused=1, its canvas read by toDataURL) is judged as the colour, against --depth-out's
+picture drawn into the canvas as the page draws it (depth_view_scaled()). One line a variant; the
+pictures stay in OUT_DIR/VARIANT. Exit 0 pass, 1 fail, 2 bad arguments, 77 (skipped) when SITE has
+no page for the lesson.
 
-Plain Python: a server on 127.0.0.1 (a free port) serves SITE for the run, Chromium's --dump-dom
-returns the page once it is idle, and the PNGs are read by tests/lessons/png_io.py.
+Plain Python: tests/web/chromium.py serves SITE on 127.0.0.1 (a free port) and drives Chromium over
+the DevTools protocol; the PNGs are read by tests/lessons/png_io.py.
 """
 import argparse
 import base64
-import functools
-import http.server
 import pathlib
 import re
 import subprocess
 import sys
-import threading
 import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "lessons"))
 from png_io import decode_png  # noqa: E402 (the shared reader, found beside the lessons' scripts)
+import chromium  # noqa: E402 (beside this script)
 
 COLOUR_CHANNEL = 5
-CHROMIUM_FLAGS = ["--headless=new", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-                  "--disable-gpu-sandbox", "--virtual-time-budget=10000"]
 
 
 def on_edge(differs, w, h, x, y):
@@ -50,21 +58,23 @@ def on_edge(differs, w, h, x, y):
     return False
 
 
-def compare_stencil(web, native, w, h):
+def compare_stencil(web, native, w, h, parity=False):
     """Pixels that differ, how many of them lie on an edge of the native stencil, and how many of the
     rest are cracks (crack())."""
     differ = [i for i in range(w * h) if web[i] != native[i]]
     off_edge = [i for i in differ if not on_edge(lambda i, j: native[i] != native[j], w, h, i % w, i // w)]
-    return len(differ), len(differ) - len(off_edge), sum(crack(web, native, w, h, i) for i in off_edge)
+    return len(differ), len(differ) - len(off_edge), sum(crack(web, native, w, h, i, parity) for i in off_edge)
 
 
-def crack(web, native, w, h, i):
+def crack(web, native, w, h, i, parity=False):
     """A lone pixel one count off the native stencil (modulo 256), every neighbour of it as native:
     one shadow-volume face missed or met twice along an edge it shares with the next face.
     SwiftShader leaves a few in lessons 10, 15 and 16, whose volumes reach infinity (w = 0);
-    the native frames have none there."""
+    the native frames have none there. PARITY: the lesson keeps a parity bit a light (lesson 10's
+    Kilgard variants INVERT bit i for light i), so a crack flips one bit a light whose volume has
+    it, any bits in all: any other value is one."""
     x, y = i % w, i // w
-    if (web[i] - native[i]) % 256 not in (1, 255):
+    if not parity and (web[i] - native[i]) % 256 not in (1, 255):
         return False
     for ny in range(max(0, y - 1), min(h, y + 2)):
         for nx in range(max(0, x - 1), min(w, x + 2)):
@@ -78,39 +88,144 @@ def channel_diff(a, i, b, j):
     return max(abs(a[4 * i + c] - b[4 * j + c]) for c in range(3))  # alpha left out: pictures are opaque
 
 
-def compare_colour(web, native, w, h):
-    """Pixels over tolerance, how many of them lie on an edge of the native picture, the largest
-    channel difference."""
+def compare_colour(web, native, w, h, sides=None):
+    """Pixels over tolerance; how many of them lie on an edge of the native picture; how many of the
+    rest the comparison leaves out; how many of the rest are lone (lone_colour()); the largest
+    channel difference. Left out, with SIDES (native pictures of the same frame drawn with other
+    settings): the pixels within one of a pixel where the native picture and a side's are not within
+    tolerance, where the layer that the settings change shows at all (and its edge pixels); every
+    pixel when SIDES is empty."""
     over = [i for i in range(w * h) if channel_diff(web, i, native, i) > COLOUR_CHANNEL]
-    edges = sum(on_edge(lambda i, j: channel_diff(native, i, native, j) > COLOUR_CHANNEL, w, h, i % w, i // w)
-                for i in over)
+    off_edge = [i for i in over
+                if not on_edge(lambda i, j: channel_diff(native, i, native, j) > COLOUR_CHANNEL, w, h, i % w, i // w)]
+    rest = off_edge
+    if sides is not None:
+        def in_layer(i, j):  # the layer shows at j: its edge pixels, as i's 3x3, with it
+            return any(channel_diff(native, j, side, j) > COLOUR_CHANNEL for side in sides)
+        rest = [i for i in off_edge if sides and not on_edge(in_layer, w, h, i % w, i // w)]
     worst = max((channel_diff(web, i, native, i) for i in range(w * h)), default=0)
-    return len(over), edges, worst
+    return (len(over), len(over) - len(off_edge), len(off_edge) - len(rest),
+            sum(lone_colour(web, native, w, h, i) for i in rest), worst)
 
 
-def snapshot(site, chromium, page, query, timeout):
-    """The page's title and its snapshot images' PNG bytes, from headless Chromium."""
-    handler = functools.partial(Quiet, directory=str(site))
-    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
-    threading.Thread(target=server.serve_forever, daemon=True).start()
-    try:
-        url = f"http://127.0.0.1:{server.server_address[1]}/{page}?{query}"
-        dom = subprocess.run([chromium, *CHROMIUM_FLAGS, "--dump-dom", url], capture_output=True, text=True,
-                             timeout=timeout).stdout
-    finally:
-        server.shutdown()
-    title = re.search(r"<title>(.*?)</title>", dom, re.S)
-    images = {m.group(1): base64.b64decode(m.group(2))
-              for m in re.finditer(r'<img id="(snapshot-[a-z]+)"[^>]*src="data:image/png;base64,([^"]*)"', dom)}
-    return (title.group(1) if title else "(no title)"), images
+def lone_colour(web, native, w, h, i):
+    """A pixel over tolerance whose eight neighbours are all within it: in the lessons with cracks
+    (crack()), a crack of a light whose stencil the frame does not end with shows only in the colour
+    (lessons 10 and 16 add many lights' terms), or one whose stencil is a crack there too."""
+    x, y = i % w, i // w
+    return all(channel_diff(web, j, native, j) <= COLOUR_CHANNEL
+               for ny in range(max(0, y - 1), min(h, y + 2)) for nx in range(max(0, x - 1), min(w, x + 2))
+               if (j := ny * w + nx) != i)
 
 
-class Quiet(http.server.SimpleHTTPRequestHandler):
-    extensions_map = {**http.server.SimpleHTTPRequestHandler.extensions_map, ".wasm": "application/wasm",
-                      ".js": "text/javascript"}
+def depth_view_scaled(picture, w, h):
+    """The native depth picture (--depth-out: w x (h + legend band)) as the page's depth view shows
+    it: drawn into the w x h canvas by a nearest-pixel blit (common/gl/web_run.cpp, showPicture), so
+    its rows squeezed into the canvas's. A destination row takes the source row under its centre.
+    Returns the pixels and how many rows at the top come from the frame (the rest: the legend)."""
+    pw, ph, channels, pixels = picture
+    out = bytearray(w * h * 4)
+    frame_rows = sum(1 for y in range(h) if int((y + 0.5) * ph / h) < h)
+    for y in range(h):
+        sy = min(ph - 1, int((y + 0.5) * ph / h))
+        for x in range(w):
+            sx = min(pw - 1, int((x + 0.5) * pw / w))
+            out[4 * (y * w + x):4 * (y * w + x) + 4] = pixels[channels * (sy * pw + sx):channels * (sy * pw + sx) + 4]
+    return bytes(out), frame_rows
 
-    def log_message(self, *args):
-        pass
+
+def run_native(native, args, variant, flags):
+    """The native lesson's frame of VARIANT at the size and time, FLAGS its outputs (and settings):
+    its seconds and None, or None and what failed."""
+    start = time.monotonic()
+    run = subprocess.run([str(native), "--headless", "--quiet", "--size", args.size, "--time", args.time,
+                          "--variant", variant, *flags], capture_output=True, text=True)
+    if run.returncode != 0:
+        return None, f"the native lesson failed (exit {run.returncode}): {run.stderr.strip()}"
+    return time.monotonic() - start, None
+
+
+def check_variant(browser, base, args, lesson, variant, out):
+    """One variant's snapshot against the native lesson: (passed, the line that says so)."""
+    out.mkdir(parents=True, exist_ok=True)
+    native_s, error = run_native(args.native, args, variant, ["--out", str(out / "native.png"),
+                                                              "--stencil-out", str(out / "native-stencil.png")])
+    if error:
+        return False, f"web FAILED: {lesson} {variant}: {error}"
+    query = f"variant={variant}&time={args.time}&size={args.size}&snapshot=1"
+    if args.without:
+        query += f"&without={args.without}"
+    start = time.monotonic()
+    browser.open(f"{base}/{lesson}.html?{query}")
+    title = browser.wait_title("snapshot-ready")
+    images = browser.evaluate("Object.fromEntries([...document.querySelectorAll('img[id^=snapshot-]')]"
+                              ".map(i => [i.id, i.src]))") or {}
+    web_s = time.monotonic() - start
+    if title != "snapshot-ready" or set(images) != {"snapshot-colour", "snapshot-stencil"}:
+        return False, f"web FAILED: {lesson}.html?{query}: title '{title}', images {sorted(images)}"
+    pngs = {name: base64.b64decode(src.split(",", 1)[1]) for name, src in images.items()}
+    for name, png in pngs.items():
+        (out / f"web-{name[len('snapshot-'):]}.png").write_bytes(png)
+
+    w, h, channels, web_stencil = decode_png(pngs["snapshot-stencil"])
+    nw, nh, _, native_stencil = decode_png((out / "native-stencil.raw.png").read_bytes())
+    cw, ch, cc, web_colour = decode_png(pngs["snapshot-colour"])
+    _, _, nc, native_colour = decode_png((out / "native.png").read_bytes())
+    if (w, h) != (nw, nh) or (cw, ch) != (nw, nh) or channels != 1 or cc != 4 or nc != 4:
+        return False, (f"web FAILED: {lesson} {variant}: sizes or channels differ: web stencil {w}x{h}x{channels}, "
+                       f"colour {cw}x{ch}x{cc}; native {nw}x{nh}")
+    sides, fight = None, ""
+    fights = dict((f[0], f[1:]) for f in args.leave_out)
+    if variant in fights:
+        sides = []
+        for setting in fights[variant]:
+            side = out / f"native-{setting.replace('=', '-')}.png"
+            _, error = run_native(args.native, args, variant, ["--set", setting, "--out", str(side)])
+            if error:
+                return False, f"web FAILED: {lesson} {variant} --set {setting}: {error}"
+            sides.append(decode_png(side.read_bytes())[3])
+    differ, edges, cracks = compare_stencil(web_stencil, native_stencil, w, h, args.cracks == "parity")
+    over, colour_edges, fought, lone, worst = compare_colour(web_colour, native_colour, w, h, sides)
+    if sides is not None:
+        fight = (f", {fought} left out (where the native frame and {' and '.join(fights[variant])} differ)"
+                 if sides else f", {fought} left out (the variant's colour is not compared)")
+    passed = differ == edges + (cracks if args.cracks else 0) and over == colour_edges + fought + (
+        lone if args.cracks else 0)
+    return passed, (f"{'web ok' if passed else 'web FAILED'}: {lesson} {variant}"
+                    f"{' without ' + args.without if args.without else ''}: stencil {differ} of {w * h} pixels "
+                    f"differ, {edges} on edges, {cracks} lone cracks{' (forgiven)' if args.cracks else ''}; "
+                    f"colour {over} over {COLOUR_CHANNEL}/255, {colour_edges} on edges{fight}, {lone} lone"
+                    f"{' (forgiven)' if args.cracks else ''}, max diff {worst}; "
+                    f"native {native_s:.1f} s, browser {web_s:.1f} s")
+
+
+def check_depth_view(browser, base, args, lesson, variant, out):
+    """The page's depth view (view=depth, paused at the time) against the native --depth-out."""
+    out.mkdir(parents=True, exist_ok=True)
+    _, error = run_native(args.native, args, variant, ["--depth-out", str(out / "native-depth.png")])
+    if error:
+        return False, f"web FAILED: {lesson} {variant} depth view: {error}"
+    url = f"{base}/{lesson}.html?variant={variant}&time={args.time}&size={args.size}&paused=1&view=depth"
+    browser.open(url)
+    browser.wait("document.getElementById('view')?.value === 'depth' || document.getElementById('status')"
+                 ".className === 'error'")
+    status = browser.evaluate("document.getElementById('status').className === 'error' ? "
+                              "document.getElementById('status').textContent : ''")
+    if status:
+        return False, f"web FAILED: {lesson} {variant} depth view: the page says: {status}"
+    png = base64.b64decode(browser.evaluate("document.getElementById('canvas').toDataURL('image/png')").split(",", 1)[1])
+    (out / "web-depth.png").write_bytes(png)
+    w, h, channels, web = decode_png(png)
+    native = decode_png((out / "native-depth.png").read_bytes())
+    if (w, h) != tuple(map(int, args.size.split("x"))) or channels != 4 or native[2] != 4:
+        return False, f"web FAILED: {lesson} depth view: canvas {w}x{h}x{channels}, native {native[:3]}"
+    # The legend's numbers (the depths' range, the count of cleared pixels) count edge pixels too,
+    # which the two rasterizers cover each their own way: the rows of the frame are compared.
+    scaled, rows = depth_view_scaled(native, w, h)
+    over, edges, _, _, worst = compare_colour(web[:4 * w * rows], scaled[:4 * w * rows], w, rows)
+    passed = over == edges
+    return passed, (f"{'web ok' if passed else 'web FAILED'}: {lesson} {variant} depth view (its {rows} rows of "
+                    f"the frame): {over} pixels over {COLOUR_CHANNEL}/255, {edges} on edges, max diff {worst}")
 
 
 def main():
@@ -119,63 +234,49 @@ def main():
     parser.add_argument("native", type=pathlib.Path)
     parser.add_argument("chromium")
     parser.add_argument("out", type=pathlib.Path)
-    parser.add_argument("--variant", default="")
+    parser.add_argument("--variant", action="append", default=[])
     parser.add_argument("--size", default="320x240")
     parser.add_argument("--time", default="1")
     parser.add_argument("--without", default="")
-    parser.add_argument("--cracks", action="store_true")
+    parser.add_argument("--cracks", nargs="?", const="count", choices=["count", "parity"])
+    parser.add_argument("--depth", action="store_true")
+    parser.add_argument("--leave-out", nargs="+", action="append", metavar=("VARIANT", "NAME=VALUE"), default=[])
     parser.add_argument("--timeout", type=float, default=120)
     args = parser.parse_args()
     lesson = args.native.name
-    if not (args.site / f"{lesson}.html").is_file():
-        print(f"web_check: {args.site / (lesson + '.html')} not found: skipped; build the site first "
-              "(cmake --preset web && cmake --build --preset web)")
-        return 77
     if not re.fullmatch(r"[1-9][0-9]{0,4}x[1-9][0-9]{0,4}", args.size):
         print(f"web_check: --size {args.size}: expected WxH")
         return 2
-    args.out.mkdir(parents=True, exist_ok=True)
-    variant = ["--variant", args.variant] if args.variant else []
+    listing = subprocess.run([str(args.native), "--list-variants"], capture_output=True, text=True)
+    if listing.returncode != 0:
+        print(f"web_check: {args.native} --list-variants failed (exit {listing.returncode})")
+        return 1
+    declared = [line.split("\t")[0] for line in listing.stdout.splitlines() if line]
+    unknown = [v for v in args.variant if v not in declared]
+    if unknown:
+        print(f"web_check: --variant {unknown[0]}: {lesson} has {', '.join(declared)}")
+        return 2
+    for fight in args.leave_out:
+        if fight[0] not in declared or not all(re.fullmatch(r"[a-z0-9-]+=-?[0-9]+", s) for s in fight[1:]):
+            print(f"web_check: --leave-out {' '.join(fight)}: expected a variant of {lesson}, then NAME=VALUE settings")
+            return 2
+    variants = args.variant or declared  # the goldens' variants: every one the lesson declares
+    if not (args.site / f"{lesson}.html").is_file():
+        return chromium.page_missing("web_check", args.site, f"{lesson}.html")
 
     start = time.monotonic()
-    native = subprocess.run([str(args.native), "--headless", "--quiet", "--size", args.size, "--time", args.time,
-                             *variant, "--out", str(args.out / "native.png"),
-                             "--stencil-out", str(args.out / "native-stencil.png")], capture_output=True, text=True)
-    if native.returncode != 0:
-        print(f"web_check: the native {lesson} failed (exit {native.returncode}): {native.stderr.strip()}")
-        return 1
-    native_s = time.monotonic() - start
-
-    query = f"time={args.time}&size={args.size}&snapshot=1" + (f"&variant={args.variant}" if args.variant else "")
-    if args.without:
-        query += f"&without={args.without}"
-    start = time.monotonic()
-    title, images = snapshot(args.site, args.chromium, f"{lesson}.html", query, args.timeout)
-    web_s = time.monotonic() - start
-    if title != "snapshot-ready" or set(images) != {"snapshot-colour", "snapshot-stencil"}:
-        print(f"web_check: {lesson}.html?{query}: title '{title}', images {sorted(images)}")
-        return 1
-    for name, png in images.items():
-        (args.out / f"web-{name[len('snapshot-'):]}.png").write_bytes(png)
-
-    w, h, channels, web_stencil = decode_png(images["snapshot-stencil"])
-    nw, nh, _, native_stencil = decode_png((args.out / "native-stencil.raw.png").read_bytes())
-    cw, ch, cc, web_colour = decode_png(images["snapshot-colour"])
-    _, _, nc, native_colour = decode_png((args.out / "native.png").read_bytes())
-    if (w, h) != (nw, nh) or (cw, ch) != (nw, nh) or channels != 1 or cc != 4 or nc != 4:
-        print(f"web_check: sizes or channels differ: web stencil {w}x{h}x{channels}, colour {cw}x{ch}x{cc}; "
-              f"native {nw}x{nh}")
-        return 1
-    differ, edges, cracks = compare_stencil(web_stencil, native_stencil, w, h)
-    over, colour_edges, worst = compare_colour(web_colour, native_colour, w, h)
-    passed = differ == edges + (cracks if args.cracks else 0) and over == colour_edges
-    print(f"{'web ok' if passed else 'web FAILED'}: {lesson} {args.variant or '(default variant)'}"
-          f"{' without ' + args.without if args.without else ''} at {args.size}, "
-          f"t={args.time}: stencil {differ} of {w * h} pixels differ, {edges} of them on edges, {cracks} lone cracks"
-          f"{' (forgiven: --cracks)' if args.cracks else ''}; colour {over} pixels "
-          f"over {COLOUR_CHANNEL}/255, {colour_edges} of them on edges, max channel diff {worst}; "
-          f"native {native_s:.1f} s, browser {web_s:.1f} s (pictures in {args.out})")
-    return 0 if passed else 1
+    results = []
+    with chromium.serve(args.site) as base, chromium.Chromium(args.chromium, timeout=args.timeout) as browser:
+        for variant in variants:
+            results.append(check_variant(browser, base, args, lesson, variant, args.out / variant))
+            print(results[-1][1], flush=True)
+        if args.depth:
+            results.append(check_depth_view(browser, base, args, lesson, variants[0], args.out / "depth-view"))
+            print(results[-1][1], flush=True)
+    failed = sum(not passed for passed, _ in results)
+    print(f"{lesson}: {len(results) - failed} of {len(results)} passed at {args.size}, t={args.time}, "
+          f"in {time.monotonic() - start:.1f} s (pictures in {args.out})")
+    return 1 if failed else 0
 
 
 if __name__ == "__main__":
