@@ -204,10 +204,13 @@ void startSession(const std::optional<std::filesystem::path>& path) {
   WebRun& r = *run;
   CommandLine cl = r.commandLine;
   cl.scene = path;
-  if (r.session) {
+  if (r.session) {  // the variant, and the options the page set away from its values
     cl.variant = r.session->variant;
     cl.settings.clear();
-    for (const Option& o : r.session->options) cl.settings.emplace_back(o.name, o.value);
+    const std::vector<Option> variantValues = optionsFor(r.declared, cl.variant, {});
+    for (std::size_t i = 0; i < r.session->options.size(); ++i)
+      if (r.session->options[i].value != variantValues[i].value)
+        cl.settings.emplace_back(r.session->options[i].name, r.session->options[i].value);
   }
   auto info = std::make_unique<LessonInfo>(r.declared);
   std::unique_ptr<Scene> scene;

@@ -252,6 +252,7 @@ function makeSceneControls(info, label) {
   }
   scene.addEventListener('change', () => {
     if (scene.value.startsWith('/dropped/')) return;
+    refusedAt = -Infinity;  // the frame's line again, unless this one is refused too
     if (Module.ccall('stencil_web_scene', 'number', ['string'], [scene.value && '/scenes/' + scene.value]) === 0)
       updateUrl({scene: scene.value || null, orbit: null});
   });
@@ -300,6 +301,7 @@ async function loadSceneFiles(fileList) {
     }
   }
   const path = folder + '/' + scenes[0].name;
+  refusedAt = -Infinity;
   if (Module.ccall('stencil_web_scene', 'number', ['string'], [path]) === 0) {
     updateUrl({scene: null, orbit: null});
     log('scene: ' + scenes[0].name + ' (' + files.length + (files.length === 1 ? ' file' : ' files') + '), not in the URL');

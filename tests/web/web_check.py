@@ -6,6 +6,7 @@ with --depth, the page's depth view of the first variant beside --depth-out. One
 
     tests/web/web_check.py SITE NATIVE_EXE CHROMIUM OUT_DIR [--variant V]... [--size WxH] [--time T]
                            [--without EXT,EXT] [--cracks [parity]] [--leave-out VARIANT NAME=VALUE...]... [--depth]
+                           [--scene FILE]... [--set NAME=VALUE]...
 
 --variant: only those variants. --cracks forgives lone pixels one count off in a uniform stretch of
 the native stencil (crack()), for the lessons whose shadow volumes reach infinity; --cracks parity,
@@ -16,7 +17,9 @@ that variant the colour is not compared where the native frame drawn with one of
 changes. For a depth fight by design (lesson 04's z-fighting: the shadow at the ground's depth,
 whose winner is each rasterizer's own rounding) and a legend drawn from counts that include edge
 pixels (lesson 13's histogram). With no setting the variant's colour is not compared at all; its
-stencil always is. --without hides those WebGL extensions from the page (its &without=), so that
+stencil always is. --scene FILE (a scene file of tests/scenes, as the scene lessons' pages offer
+them: &scene=FILE, native --scene): each variant on each such file. --set NAME=VALUE: that setting in
+both (&set=NAME:VALUE, native --set). --without hides those WebGL extensions from the page (its &without=), so that
 the browser takes the fallback it takes without them; the native lesson is the same.
 
 The stencil must be the native one's except on edge pixels, judged as the ray-cast oracle judges
@@ -46,6 +49,7 @@ from png_io import decode_png  # noqa: E402 (the shared reader, found beside the
 import chromium  # noqa: E402 (beside this script)
 
 COLOUR_CHANNEL = 5
+SCENES = pathlib.Path(__file__).resolve().parents[1] / "scenes"  # tests/scenes, which the scene lessons offer
 
 
 def on_edge(differs, w, h, x, y):
@@ -138,8 +142,10 @@ def run_native(native, args, variant, flags):
     """The native lesson's frame of VARIANT at the size and time, FLAGS its outputs (and settings):
     its seconds and None, or None and what failed."""
     start = time.monotonic()
+    scene = ["--scene", str(SCENES / args.scene_now)] if args.scene_now else []
+    settings = [a for setting in args.set for a in ("--set", setting)]
     run = subprocess.run([str(native), "--headless", "--quiet", "--size", args.size, "--time", args.time,
-                          "--variant", variant, *flags], capture_output=True, text=True)
+                          "--variant", variant, *scene, *settings, *flags], capture_output=True, text=True)
     if run.returncode != 0:
         return None, f"the native lesson failed (exit {run.returncode}): {run.stderr.strip()}"
     return time.monotonic() - start, None
@@ -153,6 +159,10 @@ def check_variant(browser, base, args, lesson, variant, out):
     if error:
         return False, f"web FAILED: {lesson} {variant}: {error}"
     query = f"variant={variant}&time={args.time}&size={args.size}&snapshot=1"
+    if args.scene_now:
+        query += f"&scene={args.scene_now}"
+    if args.set:
+        query += "&set=" + ",".join(setting.replace("=", ":") for setting in args.set)
     if args.without:
         query += f"&without={args.without}"
     start = time.monotonic()
@@ -241,9 +251,19 @@ def main():
     parser.add_argument("--cracks", nargs="?", const="count", choices=["count", "parity"])
     parser.add_argument("--depth", action="store_true")
     parser.add_argument("--leave-out", nargs="+", action="append", metavar=("VARIANT", "NAME=VALUE"), default=[])
+    parser.add_argument("--scene", action="append", default=[])
+    parser.add_argument("--set", action="append", default=[])
     parser.add_argument("--timeout", type=float, default=120)
     args = parser.parse_args()
     lesson = args.native.name
+    for scene in args.scene:
+        if not re.fullmatch(r"[a-z0-9-]+(/[a-z0-9-]+)*[.]scene", scene) or not (SCENES / scene).is_file():
+            print(f"web_check: --scene {scene}: expected a scene file of tests/scenes, such as csg/drilled-box.scene")
+            return 2
+    for setting in args.set:
+        if not re.fullmatch(r"[a-z0-9-]+=-?[0-9]+", setting):
+            print(f"web_check: --set {setting}: expected NAME=VALUE")
+            return 2
     if not re.fullmatch(r"[1-9][0-9]{0,4}x[1-9][0-9]{0,4}", args.size):
         print(f"web_check: --size {args.size}: expected WxH")
         return 2
@@ -267,9 +287,14 @@ def main():
     start = time.monotonic()
     results = []
     with chromium.serve(args.site) as base, chromium.Chromium(args.chromium, timeout=args.timeout) as browser:
-        for variant in variants:
-            results.append(check_variant(browser, base, args, lesson, variant, args.out / variant))
-            print(results[-1][1], flush=True)
+        for scene in args.scene or [None]:  # each variant on each scene file given, else its own scene
+            args.scene_now = scene
+            for variant in variants:
+                where = args.out / variant / scene.replace("/", "-")[:-len(".scene")] if scene else args.out / variant
+                passed, line = check_variant(browser, base, args, lesson, variant, where)
+                results.append((passed, line + (f" (scene {scene})" if scene else "")))
+                print(results[-1][1], flush=True)
+        args.scene_now = None
         if args.depth:
             results.append(check_depth_view(browser, base, args, lesson, variants[0], args.out / "depth-view"))
             print(results[-1][1], flush=True)
