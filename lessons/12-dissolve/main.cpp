@@ -76,7 +76,7 @@ class Dissolve final : public Lesson {
         litDiscard_("common/lit.vert", "12-dissolve/lit_discard.frag"),
         patternBit_("common/flat.vert", "12-dissolve/pattern_bit.frag"),
         mix_("common/flat.vert", "12-dissolve/mix.frag"),
-        spray_("common/volume.vert", "common/flat.frag"),
+        spray_("12-dissolve/spray.vert", "common/flat.frag"),
         screen_(makeScreenQuad()),
         groundA_(makePlane(3.0f, 1)),
         torus_(makeTorus(0.75f, 0.28f, 48, 24)),
@@ -221,7 +221,9 @@ class Dissolve final : public Lesson {
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);  // the brush paints the stencil only
     glStencilFunc(GL_NEVER, 0, 0xFF);                     // the test always fails...
     glStencilOp(GL_REPLACE, GL_KEEP, GL_KEEP);            // ...and fail writes 0: B from state 1
-    glPointSize(3.0f);
+    constexpr float kDotPixels = 3.0f;
+    glPointSize(kDotPixels);
+    spray_.set("pointSize", kDotPixels);
     spray_.set("transform", glm::mat4(1.0f));
     dots_.upload(dots);
     dots_.draw();
