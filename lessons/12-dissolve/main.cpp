@@ -201,7 +201,9 @@ class Dissolve final : public Lesson {
         const std::uint64_t h = pixelHash(id, i, 7);
         const float a = static_cast<float>(h & 0xFFFF) / 65536.0f * 6.2831853f;
         const float r = radius * std::sqrt(static_cast<float>((h >> 16) & 0xFFFF) / 65536.0f);
-        const glm::vec2 p = centre + r * glm::vec2(std::cos(a), std::sin(a));
+        // At a pixel's centre, the dot's square edges lie half a pixel from every pixel centre:
+        // the same 3x3 pixels on every rasterizer (a centre on a pixel's corner is a tie).
+        const glm::vec2 p = glm::floor(centre + r * glm::vec2(std::cos(a), std::sin(a))) + 0.5f;
         dots.push_back({2.0f * p.x / static_cast<float>(f.size.x) - 1.0f,
                         2.0f * p.y / static_cast<float>(f.size.y) - 1.0f, 0.0f, 1.0f});
       }

@@ -70,8 +70,10 @@ CsgScene goldfeatherScene(int scene, int op, int side) {
       return s;
     }
     case 5:
-    case 6: {  // a pocket whose floor is B's and whose top lies in A's top face (5), or 0.01 above it (6)
-      const float grow = scene == 6 ? 0.01f : 0.0f;
+    case 6:
+    case 9: {  // a pocket whose floor is B's and whose top lies in A's top face (5), 0.01 above it (6)
+               // or 0.01 below it (9: the pocket closed, the tie's other outcome)
+      const float grow = scene == 6 ? 0.01f : scene == 9 ? -0.01f : 0.0f;
       s.primitives.push_back({"A", makeCube(0.8f), id, {0.95f, 0.55f, 0.2f}});
       s.primitives.push_back(
           {"B",
@@ -238,8 +240,9 @@ LessonInfo lessonInfo() {
        "the scene of methods 1 to 3: 0 the two solids (by op), 1 cube * sphere - three cylinders,\n"
        "      2 A - (B - C), 3 a torus (convexity 2) minus a box, 4 a box minus a grid of spheres,\n"
        "      5 a pocket whose top lies in A's top face (coincident faces), 6 the same, B 0.01 taller,\n"
-       "      7 the cube rack: a box minus 343 boxes, 8 a box minus a 3x3x3 grid of spheres",
-       0, 8},
+       "      7 the cube rack: a box minus 343 boxes, 8 a box minus a 3x3x3 grid of spheres,\n"
+       "      9 scene 5 with B 0.01 shorter: the pocket closed (which rounding may give scene 5)",
+       0, 9},
       {"grid", 'G', "scene 4: spheres along each side of the grid (the sweep's primitive count)", 5, 7, 1},
       {"convexity", 'C',
        "Goldfeather: the layers tried per target primitive; 0: 1 for a convex mesh, else the most\n"

@@ -5,7 +5,8 @@
 with --depth, the page's depth view of the first variant beside --depth-out. One browser for all.
 
     tests/web/web_check.py SITE NATIVE_EXE CHROMIUM OUT_DIR [--variant V]... [--size WxH] [--time T]
-                           [--without EXT,EXT] [--cracks [parity]] [--leave-out VARIANT NAME=VALUE...]... [--depth]
+                           [--without EXT,EXT] [--cracks [parity]] [--leave-out VARIANT NAME=VALUE...]...
+                           [--leave-out-stencil VARIANT NAME=VALUE...]... [--depth]
                            [--scene FILE]... [--set NAME=VALUE]...
 
 --variant: only those variants. --cracks forgives lone pixels one count off in a uniform stretch of
@@ -17,8 +18,10 @@ that variant the colour is not compared where the native frame drawn with one of
 changes. For a depth fight by design (lesson 04's z-fighting: the shadow at the ground's depth,
 whose winner is each rasterizer's own rounding) and a legend drawn from counts that include edge
 pixels (lesson 13's histogram). With no setting the variant's colour is not compared at all; its
-stencil always is. --scene FILE (a scene file of tests/scenes, as the scene lessons' pages offer
-them: &scene=FILE, native --scene): each variant on each such file. --set NAME=VALUE: that setting in
+stencil is, but for --leave-out-stencil VARIANT NAME=VALUE...: the same for the stencil, for a depth
+fight that decides counts (lesson 14's coincident faces; lesson 10's volumes writing depth, whose
+faces from neighbouring lights meet at the caster's edges: no setting, the stencil not compared).
+--scene FILE (a scene file of tests/scenes, as the scene lessons' pages offer them: &scene=FILE, native --scene): each variant on each such file. --set NAME=VALUE: that setting in
 both (&set=NAME:VALUE, native --set). --without hides those WebGL extensions from the page (its &without=), so that
 the browser takes the fallback it takes without them; the native lesson is the same.
 
@@ -62,12 +65,20 @@ def on_edge(differs, w, h, x, y):
     return False
 
 
-def compare_stencil(web, native, w, h, parity=False):
-    """Pixels that differ, how many of them lie on an edge of the native stencil, and how many of the
-    rest are cracks (crack())."""
+def compare_stencil(web, native, w, h, parity=False, sides=None):
+    """Pixels that differ, how many of them lie on an edge of the native stencil, how many of the
+    rest the comparison leaves out (SIDES as compare_colour's, native stencils of the same frame
+    drawn with other settings: every pixel when SIDES is empty), and how many of the rest are cracks
+    (crack())."""
     differ = [i for i in range(w * h) if web[i] != native[i]]
     off_edge = [i for i in differ if not on_edge(lambda i, j: native[i] != native[j], w, h, i % w, i // w)]
-    return len(differ), len(differ) - len(off_edge), sum(crack(web, native, w, h, i, parity) for i in off_edge)
+    rest = off_edge
+    if sides is not None:
+        def in_layer(i, j):  # the layer the settings change shows at j
+            return any(native[j] != side[j] for side in sides)
+        rest = [i for i in off_edge if sides and not on_edge(in_layer, w, h, i % w, i // w)]
+    return (len(differ), len(differ) - len(off_edge), len(off_edge) - len(rest),
+            sum(crack(web, native, w, h, i, parity) for i in rest))
 
 
 def crack(web, native, w, h, i, parity=False):
@@ -184,27 +195,38 @@ def check_variant(browser, base, args, lesson, variant, out):
     if (w, h) != (nw, nh) or (cw, ch) != (nw, nh) or channels != 1 or cc != 4 or nc != 4:
         return False, (f"web FAILED: {lesson} {variant}: sizes or channels differ: web stencil {w}x{h}x{channels}, "
                        f"colour {cw}x{ch}x{cc}; native {nw}x{nh}")
-    sides, fight = None, ""
-    fights = dict((f[0], f[1:]) for f in args.leave_out)
-    if variant in fights:
+    def drawn_with(leave_out, picture):
+        """The native frame of the variant drawn with each setting LEAVE_OUT gives it (PICTURE:
+        "colour" or "stencil"): a list of pixels each, or None where LEAVE_OUT does not name it."""
+        settings = dict((f[0], f[1:]) for f in leave_out).get(variant)
+        if settings is None:
+            return None, ""
         sides = []
-        for setting in fights[variant]:
+        for setting in settings:
             side = out / f"native-{setting.replace('=', '-')}.png"
-            _, error = run_native(args.native, args, variant, ["--set", setting, "--out", str(side)])
+            flag = "--out" if picture == "colour" else "--stencil-out"
+            _, error = run_native(args.native, args, variant, ["--set", setting, flag, str(side)])
             if error:
-                return False, f"web FAILED: {lesson} {variant} --set {setting}: {error}"
-            sides.append(decode_png(side.read_bytes())[3])
-    differ, edges, cracks = compare_stencil(web_stencil, native_stencil, w, h, args.cracks == "parity")
+                raise RuntimeError(f"web FAILED: {lesson} {variant} --set {setting}: {error}")
+            pixels = decode_png((side if picture == "colour" else side.with_suffix(".raw.png")).read_bytes())
+            sides.append(pixels[3])
+        return sides, (f", {{}} left out (where the native frame and {' and '.join(settings)} differ)" if sides
+                       else f", {{}} left out (the variant's {picture} is not compared)")
+    try:
+        sides, fight = drawn_with(args.leave_out, "colour")
+        stencil_sides, stencil_fight = drawn_with(args.leave_out_stencil, "stencil")
+    except RuntimeError as error:
+        return False, str(error)
+    differ, edges, stencil_fought, cracks = compare_stencil(web_stencil, native_stencil, w, h,
+                                                            args.cracks == "parity", stencil_sides)
     over, colour_edges, fought, lone, worst = compare_colour(web_colour, native_colour, w, h, sides)
-    if sides is not None:
-        fight = (f", {fought} left out (where the native frame and {' and '.join(fights[variant])} differ)"
-                 if sides else f", {fought} left out (the variant's colour is not compared)")
-    passed = differ == edges + (cracks if args.cracks else 0) and over == colour_edges + fought + (
+    passed = differ == edges + stencil_fought + (cracks if args.cracks else 0) and over == colour_edges + fought + (
         lone if args.cracks else 0)
     return passed, (f"{'web ok' if passed else 'web FAILED'}: {lesson} {variant}"
                     f"{' without ' + args.without if args.without else ''}: stencil {differ} of {w * h} pixels "
-                    f"differ, {edges} on edges, {cracks} lone cracks{' (forgiven)' if args.cracks else ''}; "
-                    f"colour {over} over {COLOUR_CHANNEL}/255, {colour_edges} on edges{fight}, {lone} lone"
+                    f"differ, {edges} on edges{stencil_fight.format(stencil_fought)}, {cracks} lone cracks"
+                    f"{' (forgiven)' if args.cracks else ''}; "
+                    f"colour {over} over {COLOUR_CHANNEL}/255, {colour_edges} on edges{fight.format(fought)}, {lone} lone"
                     f"{' (forgiven)' if args.cracks else ''}, max diff {worst}; "
                     f"native {native_s:.1f} s, browser {web_s:.1f} s")
 
@@ -251,6 +273,8 @@ def main():
     parser.add_argument("--cracks", nargs="?", const="count", choices=["count", "parity"])
     parser.add_argument("--depth", action="store_true")
     parser.add_argument("--leave-out", nargs="+", action="append", metavar=("VARIANT", "NAME=VALUE"), default=[])
+    parser.add_argument("--leave-out-stencil", nargs="+", action="append", metavar=("VARIANT", "NAME=VALUE"),
+                        default=[])
     parser.add_argument("--scene", action="append", default=[])
     parser.add_argument("--set", action="append", default=[])
     parser.add_argument("--timeout", type=float, default=120)
@@ -276,10 +300,11 @@ def main():
     if unknown:
         print(f"web_check: --variant {unknown[0]}: {lesson} has {', '.join(declared)}")
         return 2
-    for fight in args.leave_out:
-        if fight[0] not in declared or not all(re.fullmatch(r"[a-z0-9-]+=-?[0-9]+", s) for s in fight[1:]):
-            print(f"web_check: --leave-out {' '.join(fight)}: expected a variant of {lesson}, then NAME=VALUE settings")
-            return 2
+    for flag, fights in (("--leave-out", args.leave_out), ("--leave-out-stencil", args.leave_out_stencil)):
+        for fight in fights:
+            if fight[0] not in declared or not all(re.fullmatch(r"[a-z0-9-]+=-?[0-9]+", s) for s in fight[1:]):
+                print(f"web_check: {flag} {' '.join(fight)}: expected a variant of {lesson}, then NAME=VALUE settings")
+                return 2
     variants = args.variant or declared  # the goldens' variants: every one the lesson declares
     if not (args.site / f"{lesson}.html").is_file():
         return chromium.page_missing("web_check", args.site, f"{lesson}.html")
