@@ -197,21 +197,30 @@ std::array<Rgb, 256> stencilPictureColours(const std::vector<std::uint64_t>& his
   return colours;
 }
 
-Image stencilRamp(const Image& stencil, const StencilRampStyle& style) {
-  std::vector<std::uint64_t> histogram(256, 0);
-  for (std::uint8_t v : stencil.pixels) ++histogram[v];
-  std::array<Rgb, 256> colours = stencilPictureColours(histogram);
+StencilLegend stencilLegend(const Image& stencil, bool grey) {
+  StencilLegend legend;
+  for (std::uint8_t v : stencil.pixels) ++legend.histogram[v];
+  legend.colours = stencilPictureColours(legend.histogram);
   // The grey view stretches the values present so that the largest is white: counts of 0 to 7
   // would be black to the eye as grey levels 0 to 7. The legend starts with the rule.
   int largest = 0;
   for (int v = 0; v < 256; ++v)
-    if (histogram[static_cast<std::size_t>(v)] > 0) largest = v;
-  const std::string greyRule = "v x 255/" + std::to_string(largest);
-  if (style.grey)
+    if (legend.histogram[static_cast<std::size_t>(v)] > 0) largest = v;
+  if (grey) {
+    legend.greyRule = "v x 255/" + std::to_string(largest);
     for (int v = 0; v < 256; ++v) {
       const auto g = static_cast<std::uint8_t>(largest > 0 ? std::min(255, (v * 255 + largest / 2) / largest) : 0);
-      colours[static_cast<std::size_t>(v)] = {g, g, g};
+      legend.colours[static_cast<std::size_t>(v)] = {g, g, g};
     }
+  }
+  return legend;
+}
+
+Image stencilRamp(const Image& stencil, const StencilRampStyle& style) {
+  const StencilLegend legend = stencilLegend(stencil, style.grey);
+  const std::vector<std::uint64_t>& histogram = legend.histogram;
+  const std::array<Rgb, 256>& colours = legend.colours;
+  const std::string& greyRule = legend.greyRule;
 
   const int k = std::max(style.legendScale, 1);
   const int scale = style.textPixels > 0 ? style.textPixels : 2 * k, small = scale,

@@ -52,6 +52,15 @@ struct StencilRampStyle {
   int textPixels = 0;
 };
 Image stencilRamp(const Image& stencil, const StencilRampStyle& style = {});
+// What stencilRamp's legend lists: each value's pixel count (256 entries) and colour in the
+// picture (stencilPictureColours, or with `grey` the grey view's v x 255 / top), and the grey
+// view's rule ("v x 255/7"; empty without `grey`). The browser's page lists it below the canvas.
+struct StencilLegend {
+  std::vector<std::uint64_t> histogram = std::vector<std::uint64_t>(256, 0);
+  std::array<std::array<std::uint8_t, 3>, 256> colours{};
+  std::string greyRule;
+};
+StencilLegend stencilLegend(const Image& stencil, bool grey);
 
 // The eight bit planes side by side (4 x 2 tiles, bit 0 top left): white where set, each tile
 // labelled with its bit in digits 1/64 of the tile's width wide times labelScale (the window's

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -33,6 +34,7 @@ EM_JS(void, stencil_page_image, (const char* id, const unsigned char* png, int s
 EM_JS(void, stencil_page_ready, (const char* lesson), { StencilPage.ready(JSON.parse(UTF8ToString(lesson))); });
 EM_JS(void, stencil_page_frame, (double time, const char* passes),
       { StencilPage.frame(time, JSON.parse(UTF8ToString(passes))); });
+EM_JS(void, stencil_page_legend, (const char* legend), { StencilPage.legend(JSON.parse(UTF8ToString(legend))); });
 EM_JS(double, stencil_page_now, (), { return performance.now(); });
 
 namespace stencil {
@@ -55,6 +57,7 @@ struct WebRun {
   int view = 0;               // colour, stencil, grey, bits, depth (lesson.js's views)
   std::optional<std::size_t> pass;  // show the frame as it was after this pass; none: the whole frame
   GLuint pictureTexture = 0, pictureFbo = 0;
+  bool urlRefused = false;  // the URL's settings were refused: the lesson started as it starts
 };
 
 std::unique_ptr<WebRun> run;
@@ -96,6 +99,7 @@ std::string lessonJson(const WebRun& r) {
                                 {"renderer", f.renderer},
                                 {"features", f.summary()},
                                 {"readsScenes", r.readsScenes},
+                                {"urlRefused", r.urlRefused},
                                 {"scene", r.commandLine.scene ? r.commandLine.scene->string() : ""},
                                 {"scenes", r.readsScenes ? sceneFiles() : std::vector<std::string>{}},
                                 {"orbit", {r.session->camera.azimuthDeg, r.session->camera.elevationDeg,
@@ -122,25 +126,38 @@ void showPicture(const Image& picture, int canvasWidth, int canvasHeight) {
                     GL_NEAREST);
 }
 
-// The depth as the window's depth view shows it (read by drawing it, framebuffer.cpp).
-Image depthViewPicture(const std::vector<float>& depth) {
+// The depth as the window's depth view shows it (read by drawing it, framebuffer.cpp), the frame's
+// rows only: the page writes the legend's line below the canvas.
+Image depthViewPicture(const std::vector<float>& depth, nlohmann::ordered_json& legend) {
   const Session& s = *run->session;
-  return depthPicture(depth, s.framebuffer->width(), s.framebuffer->height(), s.projection, s.reversedDepth);
+  const int w = s.framebuffer->width(), h = s.framebuffer->height();
+  DepthRange range;
+  Image picture = depthPicture(depth, w, h, s.projection, s.reversedDepth, &range);
+  picture.pixels.resize(static_cast<std::size_t>(4 * w * h));
+  picture.height = h;
+  legend = {{"rule", depthLegendLine(range)}};
+  return picture;
 }
 
-// The stencil as the view shows it.
-Image stencilViewPicture(const Image& stencil, int view) {
-  if (view == 3) return stencilBitPlanes(stencil);
-  if (view == 2) {
-    Image grey(stencil.width, stencil.height, 4);
-    for (std::size_t i = 0; i < stencil.pixels.size(); ++i) {
-      std::uint8_t* p = &grey.pixels[4 * i];
-      p[0] = p[1] = p[2] = stencil.pixels[i];
-      p[3] = 255;
-    }
-    return grey;
+// A stencil view (1 the ramp, 2 grey, 3 the bit planes) and its legend for the page: the ramp's and
+// grey's values present, each [value, pixels, "#rrggbb"], grey's rule first; the bit planes' layout.
+Image stencilViewPicture(const Image& stencil, int view, nlohmann::ordered_json& legend) {
+  if (view == 3) {
+    legend = {{"rule", "the eight bit planes: bit 0 top left to bit 7 bottom right, white where the bit is set"}};
+    return stencilBitPlanes(stencil);
   }
-  return stencilRamp(stencil, StencilRampStyle{.legend = false});
+  const StencilLegend values = stencilLegend(stencil, view == 2);
+  nlohmann::ordered_json entries = nlohmann::ordered_json::array();
+  for (int v = 0; v < 256; ++v) {
+    const auto i = static_cast<std::size_t>(v);
+    if (values.histogram[i] == 0) continue;
+    char colour[8];
+    std::snprintf(colour, sizeof colour, "#%02x%02x%02x", values.colours[i][0], values.colours[i][1],
+                  values.colours[i][2]);
+    entries.push_back({v, values.histogram[i], colour});
+  }
+  legend = {{"rule", view == 2 ? "grey: " + values.greyRule : "stencil values"}, {"entries", entries}};
+  return stencilRamp(stencil, StencilRampStyle{.legend = false, .grey = view == 2});
 }
 
 // Renders the frame at `time` and shows it on the canvas: in the view asked for, whole or as it was
@@ -153,20 +170,20 @@ void renderAndShow(double time) {
   s.renderFrame(time, request);
   const int w = s.framebuffer->width(), h = s.framebuffer->height();
   const Snapshot* snapshot = run->pass && !s.recorder->snapshots().empty() ? &s.recorder->snapshots().front() : nullptr;
-  if (snapshot)
-    showPicture(run->view == 0   ? snapshot->colour
-                : run->view == 4 ? depthViewPicture(snapshot->depth)
-                                 : stencilViewPicture(snapshot->stencil, run->view),
-                w, h);
-  else if (run->view == 4)
-    showPicture(depthViewPicture(s.framebuffer->readDepth()), w, h);
+  nlohmann::ordered_json legend = nlohmann::ordered_json::object();
+  if (run->view == 4)
+    showPicture(depthViewPicture(snapshot ? snapshot->depth : s.framebuffer->readDepth(), legend), w, h);
   else if (run->view != 0)
-    showPicture(stencilViewPicture(s.framebuffer->readStencil(), run->view), w, h);
+    showPicture(stencilViewPicture(snapshot ? snapshot->stencil : s.framebuffer->readStencil(), run->view, legend),
+                w, h);
+  else if (snapshot)
+    showPicture(snapshot->colour, w, h);
   else {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, s.framebuffer->id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   }
+  stencil_page_legend(legend.dump().c_str());
   nlohmann::ordered_json passes = nlohmann::ordered_json::array();
   for (const PassStats& p : s.recorder->passStats()) passes.push_back(p.label);
   stencil_page_frame(time, passes.dump().c_str());
@@ -241,18 +258,40 @@ int runWeb(const LessonInfo& info, const SceneLessonFactory& make, int argc, cha
   run->make = make;
   run->readsScenes = readsScenes;
   const bool ok = guarded([&] {
-    const CommandLine cl = parseCommandLine(run->declared, argc, argv);
-    if (cl.scene && !readsScenes)
-      throw UsageError("--scene: " + info.id + " draws only its own scene; the scene lessons read scene files");
-    run->commandLine = cl;
-    try {
-      startSession(cl.scene);
-    } catch (const UsageError& e) {
-      if (!cl.scene) throw;
-      // The URL's scene file cannot be read: said on the page, and the lesson's own scene drawn.
-      std::cerr << run->declared.id << ": " << e.what() << "\n";
+    // What the URL asks for and the lesson refuses (a variant it lacks, an option out of range, a
+    // scene file it cannot read) is said on the page, and the lesson drawn without it, so that
+    // its controls are there to choose again: the URL's settings on the lesson's own scene, else
+    // the lesson as it starts.
+    const auto refuse = [&](const UsageError& e) {
+      std::cerr << info.id << ": " << e.what() << "\n";
       stencil_page_refused(e.what());
-      startSession(std::nullopt);
+      run->urlRefused = true;
+    };
+    char* programOnly[] = {argv[0], nullptr};
+    const CommandLine asItStarts = parseCommandLine(run->declared, 1, programOnly);
+    std::vector<CommandLine> tries;
+    try {
+      tries.push_back(parseCommandLine(run->declared, argc, argv));
+      if (tries[0].scene && !readsScenes)
+        throw UsageError("--scene: " + info.id + " draws only its own scene; the scene lessons read scene files");
+      if (tries[0].scene) {
+        tries.push_back(tries[0]);
+        tries.back().scene.reset();
+      }
+    } catch (const UsageError& e) {
+      refuse(e);
+      tries.clear();
+    }
+    tries.push_back(asItStarts);
+    for (std::size_t i = 0;; ++i) {
+      run->commandLine = tries[i];
+      try {
+        startSession(tries[i].scene);
+        break;
+      } catch (const UsageError& e) {
+        if (i + 1 == tries.size()) throw;
+        refuse(e);
+      }
     }
     const GlFeatures& f = run->session->context->features();
     std::cerr << run->declared.id << ": " << f.renderer << ", " << f.version << "; " << f.summary() << "\n";

@@ -22,7 +22,11 @@ let lesson = null;  // the lesson's declarations, once its program is ready
 let failed = false;
 let refusedAt = -Infinity;  // performance.now() of the last refusal
 let passLabels = [];  // the passes the last frame ran
+let frameTime = 0;  // the last frame's time, seconds
+// A number for the URL that gives the same frame back: 9 significant digits hold a float exactly.
+const exactly = value => String(Number(value.toPrecision(9)));
 const views = ['colour', 'stencil', 'grey', 'bits', 'depth'];
+const maxLegendEntries = 48;
 
 function log(text) {
   console.log(text);
@@ -71,6 +75,7 @@ window.StencilPage = {
   // What the reader asked for could not be done (a scene file that cannot be read); the lesson
   // keeps running as it was.
   refused(message) {
+    message = inPagesWords(message);
     statusLine.textContent = message;
     statusLine.className = 'error';
     refusedAt = performance.now();
@@ -79,6 +84,25 @@ window.StencilPage = {
       failed = true;
       document.title = 'snapshot-error: ' + message;
     }
+  },
+  // The view's legend below the picture: a line, and for the stencil's ramp and grey views each value
+  // present as [value, pixels, "#rrggbb"] (the window draws the same in a band under the picture).
+  legend(legend) {
+    const box = document.getElementById('legend');
+    box.textContent = '';
+    if (!legend.rule) return;
+    box.append(legend.rule + (legend.entries ? ':' : ''));
+    const entries = legend.entries || [];
+    for (const [value, pixels, colour] of entries.slice(0, maxLegendEntries)) {
+      const entry = document.createElement('span');
+      entry.className = 'entry';
+      const swatch = document.createElement('span');
+      swatch.className = 'swatch';
+      swatch.style.background = colour;
+      entry.append(swatch, value + ' (' + pixels + ' px)');
+      box.append(' ', entry);
+    }
+    if (entries.length > maxLegendEntries) box.append(' +' + (entries.length - maxLegendEntries) + ' more values');
   },
   image(id, bytes) {
     const img = document.createElement('img');
@@ -90,6 +114,10 @@ window.StencilPage = {
   ready(info) {
     const first = lesson === null;
     lesson = info;  // the program has logged its renderer and features
+    if (first && info.urlRefused) {  // the URL keeps what the lesson draws instead
+      const scene = info.scene.startsWith('/scenes/') ? info.scene.slice('/scenes/'.length) : null;
+      updateUrl({variant: info.variant, set: settingsOf(info), time: info.time.toFixed(2), size: null, scene});
+    }
     if (first) applyUrlOrbit();
     if (snapshot) return;
     makeControls(info);
@@ -98,6 +126,7 @@ window.StencilPage = {
   frame(time, passes) {
     if (failed) return;
     passLabels = passes;
+    frameTime = time;
     // A refusal stays in view for 6 s before the frame's line takes its place again.
     if (performance.now() - refusedAt > 6000) {
       statusLine.className = '';
@@ -109,6 +138,14 @@ window.StencilPage = {
   },
 };
 
+// The command line's words for the URL's and the controls' (a refusal's message is the command line's).
+function inPagesWords(message) {
+  return message.replace(/--list-variants shows them/, 'the variant list shows them')
+      .replace(/--help lists the options/, 'the controls list the options')
+      .replace(/^--(variant|time|size|set|scene)\b/, '$1')
+      .replace(/\/dropped\/\d+\/scene\/|\/scenes\//g, '');  // the file's name, not where the page put it
+}
+
 function settingsOf(info) {
   return info.options.map(o => o.name + ':' + o.value).join(',');
 }
@@ -119,7 +156,7 @@ function makeControls(info) {
   const label = (text, element, title) => {
     const l = document.createElement('label');
     l.textContent = text;
-    if (title) l.title = title;
+    if (title) l.title = title.replace(/\s+/g, ' ');  // the help's line breaks are the terminal's
     l.appendChild(element);
     box.appendChild(l);
     return element;
@@ -130,7 +167,7 @@ function makeControls(info) {
     const option = document.createElement('option');
     option.value = v.name;
     option.textContent = v.name;
-    option.title = v.help;
+    option.title = v.help.replace(/\s+/g, ' ');
     option.selected = v.name === info.variant;
     variant.appendChild(option);
   }
@@ -141,6 +178,10 @@ function makeControls(info) {
     location.search = '?' + params.toString();
   });
   label('variant', variant, info.variants.find(v => v.name === info.variant)?.help);
+  const variantHelp = document.createElement('span');  // what the variant shows, in view (a title is not, on a touch screen)
+  variantHelp.className = 'help';
+  variantHelp.textContent = info.variants.find(v => v.name === info.variant)?.help ?? '';
+  box.appendChild(variantHelp);
   for (const o of info.options) {
     const input = document.createElement('input');
     input.id = 'option-' + o.name;
@@ -216,17 +257,24 @@ function makeControls(info) {
     play.textContent = on ? 'pause' : 'play';
     Module._stencil_web_play(on ? 1 : 0);
     updateUrl({paused: on ? null : '1'});
-    if (!on) updateUrl({time: Number(time.value).toFixed(2)});
+    if (!on) updateUrl({time: exactly(frameTime)});  // the frame shown, not the box's 2 decimals
   };
   play.addEventListener('click', () => setPlaying(!playing));
   box.appendChild(play);
-  // The URL's view and pass.
-  if (views.includes(params.get('view'))) {
+  // The URL's view and pass; one it cannot show is said, and left out of the URL.
+  if (params.has('view') && !views.includes(params.get('view'))) {
+    StencilPage.refused('view=' + params.get('view') + ': expected ' + views.join(', '));
+    updateUrl({view: null});
+  } else if (params.has('view')) {
     view.value = params.get('view');
     Module._stencil_web_view(views.indexOf(view.value));
   }
   const passParam = Number(params.get('pass') || 0);
-  if (Number.isInteger(passParam) && passParam > 0) {
+  if (!Number.isInteger(passParam) || passParam < 0 || passParam > passLabels.length) {
+    StencilPage.refused('pass=' + params.get('pass') + ': expected 1 to ' + passLabels.length +
+                        ', a pass of the ' + passLabels.length + ' this frame ran');
+    updateUrl({pass: null});
+  } else if (passParam > 0) {
     currentPass = passParam;
     playing = false;
     Module._stencil_web_pass(currentPass - 1);
@@ -256,14 +304,14 @@ function makeSceneControls(info, label) {
     if (Module.ccall('stencil_web_scene', 'number', ['string'], [scene.value && '/scenes/' + scene.value]) === 0)
       updateUrl({scene: scene.value || null, orbit: null});
   });
-  label('scene', scene, 'a scene file of tests/scenes/, or drop a .scene file and its .obj meshes on the picture');
+  label('scene file', scene, 'a scene file of tests/scenes/, or drop a .scene file and its .obj meshes on the picture');
   const pick = document.createElement('input');
   pick.id = 'scene-file';
   pick.type = 'file';
   pick.multiple = true;
   pick.accept = '.scene,.obj';
   pick.addEventListener('change', () => loadSceneFiles(pick.files));
-  label('scene file', pick, 'a .scene file and the .obj meshes it names');
+  label('your scene file', pick, 'a .scene file and the .obj meshes it names');
 }
 
 const maxSceneFileBytes = 64 * 1024 * 1024;
@@ -324,7 +372,7 @@ function orbitValue() {
   return [0, 1, 2].map(i => Module._stencil_web_orbit_value(i));
 }
 function keepOrbitInUrl() {
-  updateUrl({orbit: orbitValue().map(v => Number(v.toFixed(2))).join(',')});
+  updateUrl({orbit: orbitValue().map(exactly).join(',')});
 }
 function setUpOrbit() {
   const canvas = document.getElementById('canvas');

@@ -87,6 +87,7 @@ file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/pages)
 set(page_template ${PROJECT_SOURCE_DIR}/common/web/lesson.html)
 set(page_script ${PROJECT_SOURCE_DIR}/common/web/page.cmake)
 set(links_filter ${PROJECT_SOURCE_DIR}/common/web/repository_links.lua)
+set(window_filter ${PROJECT_SOURCE_DIR}/common/web/in_the_window.lua)
 set(index_entries "")
 list(LENGTH STENCIL_WEB_LESSONS count)
 math(EXPR last "${count} - 1")
@@ -127,17 +128,19 @@ foreach(i RANGE ${last})
     list(GET STENCIL_WEB_LESSONS ${j} next)
   endif()
   # The docs page, converted at build time (its links to the repository's files made plain text by
-  # repository_links.lua), then set in the page beside the canvas.
+  # repository_links.lua; a line under "In the window" saying the page's controls do what the keys
+  # do, in_the_window.lua), then set in the page beside the canvas.
   set(fragment ${CMAKE_BINARY_DIR}/pages/${id}.fragment.html)
   set(page ${STENCIL_SITE}/${id}.html)
   set(figures_stamp ${CMAKE_BINARY_DIR}/pages/${id}.figures.stamp)
   add_custom_command(OUTPUT ${page}
     COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_BINARY_DIR}/pages
-    COMMAND ${PANDOC_EXECUTABLE} --from gfm --to html5 --lua-filter ${links_filter} --output ${fragment}
+    COMMAND ${PANDOC_EXECUTABLE} --from gfm --to html5 --lua-filter ${links_filter} --lua-filter ${window_filter}
+      --output ${fragment}
       ${PROJECT_SOURCE_DIR}/docs/${id}.md
     COMMAND ${CMAKE_COMMAND} -DTEMPLATE=${page_template} -DFRAGMENT=${fragment} -DOUT=${page}
       -DID=${id} "-DTITLE=${title}" -DPREVIOUS=${previous} -DNEXT=${next} -P ${page_script}
-    DEPENDS ${PROJECT_SOURCE_DIR}/docs/${id}.md ${page_template} ${page_script} ${links_filter}
+    DEPENDS ${PROJECT_SOURCE_DIR}/docs/${id}.md ${page_template} ${page_script} ${links_filter} ${window_filter}
     COMMENT "Page ${id}.html (pandoc)"
     VERBATIM)
   # The pictures the page shows (figures/..., sweeps/...), each copied to the same place in the

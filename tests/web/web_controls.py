@@ -3,7 +3,10 @@
 student uses them: another variant, an option, the pass stepper forward and back, each view. After
 each, the canvas must show another picture than before (read by canvas.toDataURL: the context keeps
 its drawing buffer) and the URL must carry the new state; then that URL, loaded fresh, must restore
-the controls and the very same picture (the deep link).
+the controls and the very same picture (the deep link). The views' legends below the canvas: the
+stencil's and grey's counts add up to the canvas's pixels, grey's largest value is white. Then URLs
+the lesson refuses (an unknown variant or option, a time that is not a number, a view or pass the
+page cannot show): each must be one line on the page, dropped from the URL, the lesson drawn.
 
     tests/web/web_controls.py SITE CHROMIUM OUT_DIR [--lesson 08-shadow-volumes-counting]
         [--variant torus] [--option show]
@@ -145,6 +148,20 @@ def main():
                     page.changed(f"view {view} (against {other})", before, after)
                 seen[view] = after
             page.url_has(f"view {view}", "view", None if view == "colour" else view)
+            legend = browser.evaluate("document.getElementById('legend').textContent")
+            entries = browser.evaluate("[...document.querySelectorAll('#legend .entry')].map(e => e.textContent)")
+            if view in ("stencil", "grey"):
+                # Every pixel counted once, by its value: the counts add up to the canvas.
+                counted = sum(int(e.split("(")[1].split(" ")[0]) for e in entries)
+                page.check(f"view {view}: the legend counts every pixel", counted == len(after) // 4,
+                           f"{len(entries)} values, {counted} pixels: '{legend[:60]}...'")
+            if view == "grey":  # stretched: the largest value present white
+                page.check("view grey: the largest value white", legend.startswith("grey: v x 255/")
+                           and max(after[0::4]) == 255, f"'{legend[:40]}', brightest {max(after[0::4])}")
+            if view in ("bits", "depth"):
+                page.check(f"view {view}: the legend's line", legend.startswith("the eight bit planes"
+                                                                                if view == "bits" else "depth: "),
+                           f"'{legend[:60]}'")
 
         # The deep link: a state of every kind, then that URL loaded fresh.
         browser.choose("#view", "stencil")
@@ -168,6 +185,25 @@ def main():
         page.check("deep link: the same picture", again == state, "the very same" if again == state
                    else f"{sum(1 for i in range(0, len(again), 4) if again[i:i + 3] != state[i:i + 3])} pixels differ")
         print(f"deep link: {link.split('?', 1)[1]}")
+
+        # What the URL asks for and the lesson refuses: one line on the page, and the lesson drawn
+        # without it, its controls there, the URL rewritten to what it draws.
+        for query, said, gone in (("variant=no-such-variant", "unknown variant 'no-such-variant'", "variant"),
+                                  ("set=no-such-option:5", "unknown option 'no-such-option'", "set"),
+                                  ("time=soon", "time expects a number", "time"),
+                                  ("view=sideways", "view=sideways: expected", "view"),
+                                  ("pass=999", "pass=999: expected 1 to", "pass")):
+            browser.open("about:blank")
+            browser.open(f"{base}/{args.lesson}.html?{query}&size=320x240&paused=1")
+            ready(browser, first)
+            status = browser.evaluate("document.getElementById('status').className + ': ' + "
+                                      "document.getElementById('status').textContent")
+            page.check(f"{query}: said on the page", status.startswith("error: ") and said in status, f"'{status}'")
+            value = page.query().get(gone, [None])[0]
+            page.check(f"{query}: the URL drops it", value != query.split("=", 1)[1], f"{gone}={value}")
+            drawn = page.canvas(f"refused-{gone}")
+            page.check(f"{query}: the lesson drawn", len(set(drawn[i:i + 3] for i in range(0, len(drawn), 4))) > 1,
+                       "a picture" if len(set(drawn[i:i + 3] for i in range(0, len(drawn), 4))) > 1 else "one colour")
     print(f"web_controls: {args.lesson}: {page.count} pictures, {len(page.failures)} checks failed, "
           f"in {time.monotonic() - start:.1f} s (pictures in {args.out})")
     return 1 if page.failures else 0
