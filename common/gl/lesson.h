@@ -130,6 +130,9 @@ struct LessonInfo {
   // Whether the lesson reads Frame::pointer (a brush the right mouse button drags): the window
   // gives the right-drag hint only then.
   bool brush = false;
+  // The settings a scene file is drawn with where neither the variant nor --set gives them
+  // (lesson 14: method 4, as its default method 0 draws only the demo's two solids).
+  std::vector<std::pair<std::string, int>> sceneSettings;
   // Refuses options that contradict each other or the scene file (exit 2, before anything is
   // drawn): returns why in one line, or an empty string. Unset: every combination draws.
   std::function<std::string(const OptionsChosen&)> refuseOptions;

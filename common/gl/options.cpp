@@ -268,8 +268,19 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
         o.min = 0;
         o.max = std::numeric_limits<int>::max();
       }
+  addSceneSettings(info, cl);
   optionsFor(checked, cl.variant, cl.settings);
   return cl;
+}
+
+void addSceneSettings(const LessonInfo& info, CommandLine& cl) {
+  if (!cl.scene) return;
+  const std::vector<std::pair<std::string, int>>& ofVariant = findVariant(info, cl.variant).settings;
+  const auto gives = [](const std::vector<std::pair<std::string, int>>& settings, const std::string& name) {
+    return std::any_of(settings.begin(), settings.end(), [&](const auto& s) { return s.first == name; });
+  };
+  for (const auto& [name, value] : info.sceneSettings)
+    if (!gives(ofVariant, name) && !gives(cl.settings, name)) cl.settings.emplace_back(name, value);
 }
 
 std::string variantList(const LessonInfo& info) {

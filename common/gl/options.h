@@ -55,6 +55,9 @@ constexpr int kViewCount = 5;
 
 // Throws UsageError with one line for anything it does not understand.
 CommandLine parseCommandLine(const LessonInfo&, int argc, char** argv);
+// With a scene file (cl.scene), LessonInfo::sceneSettings that neither the variant nor cl.settings
+// gives are added to cl.settings. parseCommandLine does it; the browser's page when it loads a scene.
+void addSceneSettings(const LessonInfo&, CommandLine& cl);
 // readsScenes: the lesson runs through runSceneLesson, so --scene is listed, and --mask-out where
 // the lesson makes shadow claims (LessonInfo::shadows, which also lists --oracle).
 std::string helpText(const LessonInfo&, const std::string& program, bool readsScenes = false);

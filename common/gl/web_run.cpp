@@ -229,6 +229,7 @@ void startSession(const std::optional<std::filesystem::path>& path) {
       if (r.session->options[i].value != variantValues[i].value)
         cl.settings.emplace_back(r.session->options[i].name, r.session->options[i].value);
   }
+  addSceneSettings(r.declared, cl);
   auto info = std::make_unique<LessonInfo>(r.declared);
   std::unique_ptr<Scene> scene;
   if (path) scene = std::make_unique<Scene>(readScene(cl, *info));

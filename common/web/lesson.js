@@ -53,7 +53,8 @@ function updateUrl(changes) {
     if (value === null || value === undefined || value === '') params.delete(key);
     else params.set(key, value);
   }
-  history.replaceState(null, '', '?' + params.toString());
+  const query = params.toString();
+  history.replaceState(null, '', query ? '?' + query : location.pathname);
 }
 
 function base64(bytes) {
@@ -196,7 +197,12 @@ function makeControls(info) {
     }
     input.addEventListener('change', () => {
       const value = input.type === 'checkbox' ? (input.checked ? 1 : 0) : Number(input.value);
-      if (Module.ccall('stencil_web_option', 'number', ['string', 'number'], [o.name, value]) !== 0) return;
+      refusedAt = -Infinity;  // the frame's line again, unless this one is refused too
+      if (Module.ccall('stencil_web_option', 'number', ['string', 'number'], [o.name, value]) !== 0) {
+        if (input.type === 'checkbox') input.checked = o.value !== 0;  // refused: the box shows what is drawn
+        else input.value = o.value;
+        return;
+      }
       o.value = value;
       updateUrl({set: settingsOf(info)});
     });
@@ -208,7 +214,14 @@ function makeControls(info) {
   time.step = '0.1';
   time.value = info.time.toFixed(2);
   time.addEventListener('change', () => {
-    Module._stencil_web_time(Number(time.value));
+    const seconds = Number(time.value);
+    if (time.value.trim() === '' || !Number.isFinite(seconds)) {
+      StencilPage.refused('time: expected a number of seconds, got \'' + time.value + '\'');
+      time.value = frameTime.toFixed(2);
+      return;
+    }
+    refusedAt = -Infinity;
+    Module._stencil_web_time(seconds);
     updateUrl({time: time.value});
   });
   label('time (s)', time);
@@ -298,11 +311,16 @@ function makeSceneControls(info, label) {
     option.selected = name === current;
     scene.appendChild(option);
   }
+  let drawn = scene.value;
   scene.addEventListener('change', () => {
     if (scene.value.startsWith('/dropped/')) return;
     refusedAt = -Infinity;  // the frame's line again, unless this one is refused too
-    if (Module.ccall('stencil_web_scene', 'number', ['string'], [scene.value && '/scenes/' + scene.value]) === 0)
+    if (Module.ccall('stencil_web_scene', 'number', ['string'], [scene.value && '/scenes/' + scene.value]) === 0) {
+      drawn = scene.value;
       updateUrl({scene: scene.value || null, orbit: null});
+    } else {
+      scene.value = drawn;  // refused: the list names the scene still drawn
+    }
   });
   label('scene file', scene, 'a scene file of tests/scenes/, or drop a .scene file and its .obj meshes on the picture');
   const pick = document.createElement('input');

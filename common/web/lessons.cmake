@@ -10,3 +10,10 @@ set(STENCIL_WEB_SCENES_13-depth-complexity *.scene hard/*.scene)
 set(STENCIL_WEB_SCENES_14-csg csg/*.scene opencsg/*.scene)
 set(STENCIL_WEB_SCENES_15-robust-zfail *.scene hard/*.scene)
 set(STENCIL_WEB_SCENES_16-fast-robust-shadows *.scene hard/*.scene)
+# Left out of a lesson's list: the files it refuses as they stand (the command line's one line and
+# exit 2): lesson 15 takes closed casters only, and the dusk scene's sun is below the horizon but
+# for --shadow-hours, which the page does not offer.
+set(STENCIL_WEB_SCENES_LEFT_OUT_13-depth-complexity sun-box-building-dusk.scene)
+set(STENCIL_WEB_SCENES_LEFT_OUT_15-robust-zfail sun-box-building-dusk.scene hard/light-in-open-container.scene
+    hard/open-mesh.scene)
+set(STENCIL_WEB_SCENES_LEFT_OUT_16-fast-robust-shadows sun-box-building-dusk.scene)

@@ -109,6 +109,9 @@ foreach(i RANGE ${last})
     set(scene_globs ${STENCIL_WEB_SCENES_${id}} meshes/*.obj)
     list(TRANSFORM scene_globs PREPEND ${PROJECT_SOURCE_DIR}/tests/scenes/)
     file(GLOB scene_files CONFIGURE_DEPENDS ${scene_globs})
+    set(left_out ${STENCIL_WEB_SCENES_LEFT_OUT_${id}})
+    list(TRANSFORM left_out PREPEND ${PROJECT_SOURCE_DIR}/tests/scenes/)
+    list(REMOVE_ITEM scene_files ${left_out})
     foreach(file IN LISTS scene_files)
       file(RELATIVE_PATH name ${PROJECT_SOURCE_DIR}/tests/scenes ${file})
       target_link_options(${id} PRIVATE "SHELL:--embed-file ${file}@/scenes/${name}")
@@ -119,13 +122,17 @@ foreach(i RANGE ${last})
   stencil_web_title(${id} title)
   set(previous "")
   set(next "")
+  set(previous_title "")
+  set(next_title "")
   if(i GREATER 0)
     math(EXPR j "${i} - 1")
     list(GET STENCIL_WEB_LESSONS ${j} previous)
+    stencil_web_title(${previous} previous_title)
   endif()
   if(i LESS last)
     math(EXPR j "${i} + 1")
     list(GET STENCIL_WEB_LESSONS ${j} next)
+    stencil_web_title(${next} next_title)
   endif()
   # The docs page, converted at build time (its links to the repository's files made plain text by
   # repository_links.lua; a line under "In the window" saying the page's controls do what the keys
@@ -139,7 +146,8 @@ foreach(i RANGE ${last})
       --output ${fragment}
       ${PROJECT_SOURCE_DIR}/docs/${id}.md
     COMMAND ${CMAKE_COMMAND} -DTEMPLATE=${page_template} -DFRAGMENT=${fragment} -DOUT=${page}
-      -DID=${id} "-DTITLE=${title}" -DPREVIOUS=${previous} -DNEXT=${next} -P ${page_script}
+      -DID=${id} "-DTITLE=${title}" -DPREVIOUS=${previous} -DNEXT=${next} "-DPREVIOUS_TITLE=${previous_title}"
+      "-DNEXT_TITLE=${next_title}" -P ${page_script}
     DEPENDS ${PROJECT_SOURCE_DIR}/docs/${id}.md ${page_template} ${page_script} ${links_filter} ${window_filter}
     COMMENT "Page ${id}.html (pandoc)"
     VERBATIM)

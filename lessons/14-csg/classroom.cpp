@@ -324,8 +324,9 @@ LessonInfo lessonInfo() {
   info.camera.azimuthDeg = 30.0f;
   info.camera.elevationDeg = 25.0f;
   info.camera.farPlane = 30.0f;
-  // A scene file is the scene: the options that pick the lesson's own scenes, and the demo's two
-  // solids, have nothing to draw it with.
+  // A scene file is drawn by the automatic method unless a method is chosen; the options that pick
+  // the lesson's own scenes, and the demo's two solids, have nothing to draw it with.
+  info.sceneSettings = {{"method", kAutomatic}};
   info.refuseOptions = [](const OptionsChosen& o) -> std::string {
     if (!o.scene) return scsRefusal(o);
     for (const char* own : {"scene", "op", "grid"})
