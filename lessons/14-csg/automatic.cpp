@@ -73,9 +73,14 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
 //     (llvmpipe copies 33 KB of state at each change);
 //   - two subtracted primitives can meet along a pixel's ray only where their rectangles and
 //     their world bounds overlap; a group is the primitives linked that way, and the order of
-//     subtractions matters only within a group. n cycles hold every ordering of n primitives, so
-//     the cycles stop at the largest group's size; where no two primitives meet, one cycle is
-//     the whole answer and it needs no query;
+//     subtractions matters only within a group. The cycles run through the batches forwards and
+//     backwards in turn, and the batch drawn last is not drawn again first (the surface it moved
+//     lies on its back face, not behind it: it would move nothing), as SCS's sequence turns
+//     (geometry/csg.h, subtractionSequence). The primitives on one pixel lie in different batches,
+//     and n such cycles hold every ordering of n batches (the k-th of an ordering from the k-th
+//     cycle, or from the end of the one before where the k-th cycle starts past it), so the cycles
+//     stop at the largest group's size; where no two primitives meet, one cycle is the whole
+//     answer and it needs no query;
 //   - a batch that moved nothing, and meets no batch that moved something, since it was last
 //     drawn would move nothing again: it is left out of the next cycle;
 //   - a subtracted primitive whose batch never moved the surface is nowhere on it: not merged;
@@ -137,12 +142,20 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
     if (!queries.empty()) glGenQueries(static_cast<GLsizei>(nb), queries.data());
     glStencilMask(0xFF);
     if (p.intersected.size() > 1) glClear(GL_STENCIL_BUFFER_BIT);  // scsEnter's clip left its counts
+    std::size_t last = nb;  // the batch drawn last
     for (std::size_t cycle = 0; cycle < cycles; ++cycle) {
       f.count("cycles");
       std::vector<bool> drawn(nb, false);
-      for (std::size_t b = 0; b < nb; ++b) {
+      bool first = true;
+      for (std::size_t step = 0; step < nb; ++step) {
+        const std::size_t b = cycle % 2 ? nb - 1 - step : step;
         for (std::size_t c = 0; c < nb && !drawn[b]; ++c) drawn[b] = batchesMeet[b][c] && moved[c];
+        // Drawn again straight after itself a batch moves nothing (a surface it moved lies on its back
+        // face, not behind it): the cycles turn there.
+        if (first && b == last) drawn[b] = false;
         if (!drawn[b]) continue;
+        first = false;
+        last = b;
         // Their back faces clear their marks, unless the far plane cuts some of them away.
         const bool clean =
             std::none_of(batches[b].begin(), batches[b].end(), [&](int s) { return reachesPastFar(f, s); });
