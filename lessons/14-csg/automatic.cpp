@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <iostream>
 #include <limits>
+#include <utility>
 
 #include "csg_lesson.h"
 #include "geometry/bounds.h"
@@ -31,9 +32,11 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
   mergeInputs();
   // The work buffer's colour is the pass stepper's picture alone: here only the primitives are
   // written, by a shader with nothing to light.
-  glBindFramebuffer(GL_FRAMEBUFFER, work_);
   const GLenum primitivesOnly[] = {GL_NONE, GL_COLOR_ATTACHMENT1};
-  glDrawBuffers(2, primitivesOnly);
+  for (GLuint buffer : {nearest_, work_}) {  // (the two swap: keepNearest)
+    glBindFramebuffer(GL_FRAMEBUFFER, buffer);
+    glDrawBuffers(2, primitivesOnly);
+  }
   glEnable(GL_SCISSOR_TEST);
   for (const CsgProduct& p : sop.products) {
     // A product's surface lies inside each of its intersected primitives: within all their window
@@ -53,9 +56,11 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
     }
   }
   glDisable(GL_SCISSOR_TEST);
-  glBindFramebuffer(GL_FRAMEBUFFER, work_);
   const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  glDrawBuffers(2, both);
+  for (GLuint buffer : {nearest_, work_}) {
+    glBindFramebuffer(GL_FRAMEBUFFER, buffer);
+    glDrawBuffers(2, both);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer());
 }
 
@@ -68,9 +73,14 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
 //     (llvmpipe copies 33 KB of state at each change);
 //   - two subtracted primitives can meet along a pixel's ray only where their rectangles and
 //     their world bounds overlap; a group is the primitives linked that way, and the order of
-//     subtractions matters only within a group. n cycles hold every ordering of n primitives, so
-//     the cycles stop at the largest group's size; where no two primitives meet, one cycle is
-//     the whole answer and it needs no query;
+//     subtractions matters only within a group. The cycles run through the batches forwards and
+//     backwards in turn, and the batch drawn last is not drawn again first (the surface it moved
+//     lies on its back face, not behind it: it would move nothing), as SCS's sequence turns
+//     (geometry/csg.h, subtractionSequence). The primitives on one pixel lie in different batches,
+//     and n such cycles hold every ordering of n batches (the k-th of an ordering from the k-th
+//     cycle, or from the end of the one before where the k-th cycle starts past it), so the cycles
+//     stop at the largest group's size; where no two primitives meet, one cycle is the whole
+//     answer and it needs no query;
 //   - a batch that moved nothing, and meets no batch that moved something, since it was last
 //     drawn would move nothing again: it is left out of the next cycle;
 //   - a subtracted primitive whose batch never moved the surface is nowhere on it: not merged;
@@ -132,12 +142,20 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
     if (!queries.empty()) glGenQueries(static_cast<GLsizei>(nb), queries.data());
     glStencilMask(0xFF);
     if (p.intersected.size() > 1) glClear(GL_STENCIL_BUFFER_BIT);  // scsEnter's clip left its counts
+    std::size_t last = nb;  // the batch drawn last
     for (std::size_t cycle = 0; cycle < cycles; ++cycle) {
       f.count("cycles");
       std::vector<bool> drawn(nb, false);
-      for (std::size_t b = 0; b < nb; ++b) {
+      bool first = true;
+      for (std::size_t step = 0; step < nb; ++step) {
+        const std::size_t b = cycle % 2 ? nb - 1 - step : step;
         for (std::size_t c = 0; c < nb && !drawn[b]; ++c) drawn[b] = batchesMeet[b][c] && moved[c];
+        // Drawn again straight after itself a batch moves nothing (a surface it moved lies on its back
+        // face, not behind it): the cycles turn there.
+        if (first && b == last) drawn[b] = false;
         if (!drawn[b]) continue;
+        first = false;
+        last = b;
         // Their back faces clear their marks, unless the far plane cuts some of them away.
         const bool clean =
             std::none_of(batches[b].begin(), batches[b].end(), [&](int s) { return reachesPastFar(f, s); });
@@ -221,7 +239,8 @@ std::vector<bool> Csg::primitivesIn(const ScissorRect& r) const {
 //     0, as the product wants it; an intersected one's rectangle holds the product's, and every
 //     layer's pixels);
 //   - each layer's trimmed surface is kept where it is nearer than the layers before it
-//     (keepNearest), and the product is merged once, from that.
+//     (keepNearest; the first layer's is kept whole, by swapping the work buffer with the nearest
+//     layers' buffer), and the product is merged once, from that.
 void Csg::layeredByLayerRects(Frame& f, const CsgProduct& p, const ScissorRect& within) {
   std::vector<int> targets = p.intersected;
   targets.insert(targets.end(), p.subtracted.begin(), p.subtracted.end());
@@ -231,28 +250,41 @@ void Csg::layeredByLayerRects(Frame& f, const CsgProduct& p, const ScissorRect& 
   // Per target, the layers its rectangle has pixels of.
   std::vector<int> deepest;
   for (int x : targets) deepest.push_back(queries ? 255 : counts.largestWithin(footprintOf(f, x).rect));
-  clearNearest();
+  int layers = 0;
   for (int layer = 0; layer < k; ++layer) {
     std::vector<int> present;
     for (std::size_t i = 0; i < targets.size(); ++i)
       if (deepest[i] > layer) present.push_back(targets[i]);
     if (!queries) {
-      const ScissorRect r = counts.layer(layer);
+      const ScissorRect& r = counts.layers[static_cast<std::size_t>(layer)];
       glScissor(r.x, r.y, r.width, r.height);
     }
     if (!trimLayer(f, p, present, present, layer, true)) break;
+    ++layers;
   }
   glScissor(within.x, within.y, within.width, within.height);
+  if (layers == 0) clearNearest();  // no first layer took its place
   mergeIntoFrame(f, p, targets, true);
 }
 
 // The automatic method's step 3 of a layer: the work buffer's surface into nearest_, where it is
-// nearer than the layers before it.
-void Csg::keepNearest(Frame& f) {
+// nearer than the layers before it. The first layer's is the nearest yet wherever it has one, and
+// far (the product's rectangle cleared by the count or the layer's own clear) wherever it has
+// none: the two buffers swap, where a pass would copy it and change framebuffers twice (each
+// change ends llvmpipe's batch of draws).
+void Csg::keepNearest(Frame& f, int layer) {
+  if (layer == 0) {
+    std::swap(work_, nearest_);
+    std::swap(workDepth_, nearestDepth_);
+    std::swap(workColour_, nearestColour_);
+    std::swap(workPrimitive_, nearestPrimitive_);
+    f.pass("keep");
+    return;
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, nearest_);
   glDepthFunc(depth_.less);
   glDepthMask(GL_TRUE);
-  glDisable(GL_STENCIL_TEST);  // (nearest_ has none)
+  glDisable(GL_STENCIL_TEST);  // (its stencil is no part of it)
   bindSurface(workDepth_, workPrimitive_);
   fullScreen(keep_);
   bindSurface(0, 0);
@@ -276,17 +308,27 @@ Csg::LayerCounts Csg::readCounts() {
   c.counts.assign(static_cast<std::size_t>(box[2]) * static_cast<std::size_t>(box[3]), 0);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(box[0], box[1], box[2], box[3], GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, c.counts.data());
-  c.largest = c.counts.empty() ? 0 : *std::max_element(c.counts.begin(), c.counts.end());
+  // One scan: per count, the corners of the pixels with it; the k-th layer's rectangle holds every
+  // count above k.
+  std::vector<glm::ivec2> low(256, glm::ivec2(std::numeric_limits<int>::max())), high(256, glm::ivec2(-1));
+  for (int y = 0; y < c.box.height; ++y)
+    for (int x = 0; x < c.box.width; ++x) {
+      const int n = c.at(x, y);
+      c.largest = std::max(c.largest, n);
+      low[static_cast<std::size_t>(n)] = glm::min(low[static_cast<std::size_t>(n)], glm::ivec2(x, y));
+      high[static_cast<std::size_t>(n)] = glm::max(high[static_cast<std::size_t>(n)], glm::ivec2(x, y));
+    }
+  c.layers.resize(static_cast<std::size_t>(c.largest));
+  for (int k = c.largest - 1; k >= 0; --k) {
+    const auto above = static_cast<std::size_t>(k + 1);
+    if (k + 1 < c.largest) {  // every count above k + 1 too
+      low[above] = glm::min(low[above], low[above + 1]);
+      high[above] = glm::max(high[above], high[above + 1]);
+    }
+    c.layers[static_cast<std::size_t>(k)] = {c.box.x + low[above].x, c.box.y + low[above].y,
+                                             high[above].x - low[above].x + 1, high[above].y - low[above].y + 1};
+  }
   return c;
-}
-
-ScissorRect Csg::LayerCounts::layer(int k) const {
-  glm::ivec2 low(std::numeric_limits<int>::max()), high(-1);
-  for (int y = 0; y < box.height; ++y)
-    for (int x = 0; x < box.width; ++x)
-      if (at(x, y) > k) low = glm::min(low, glm::ivec2(x, y)), high = glm::max(high, glm::ivec2(x, y));
-  if (high.x < 0) return {};
-  return {box.x + low.x, box.y + low.y, high.x - low.x + 1, high.y - low.y + 1};
 }
 
 int Csg::LayerCounts::largestWithin(const ScissorRect& r) const {

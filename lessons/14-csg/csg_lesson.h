@@ -57,7 +57,7 @@ class Csg final : public Lesson {
     ScissorRect box;              // the rectangle read (the scissor box)
     std::vector<GLubyte> counts;  // per pixel, rows from the bottom
     int largest = 0;
-    ScissorRect layer(int k) const;  // the rectangle of the pixels with a k-th fragment (count > k)
+    std::vector<ScissorRect> layers;  // per k, the rectangle of the pixels with a k-th fragment (count > k)
     int largestWithin(const ScissorRect& r) const;
     int at(int x, int y) const;  // x, y from the box's corner
   };
@@ -68,7 +68,7 @@ class Csg final : public Lesson {
   bool trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targets,
                  const std::vector<int>& trimmers, int layer, bool automatic = false);
   void mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& targets, bool fromNearest = false);
-  void keepNearest(Frame& f);
+  void keepNearest(Frame& f, int layer);
   void clearNearest();
   int targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<int>& targets,
                             LayerCounts* counts = nullptr);
@@ -98,6 +98,7 @@ class Csg final : public Lesson {
 
   // ---- drawing.cpp: the work buffer and the draws ------------------------------------------------
   void workBuffer(glm::ivec2 size);
+  static void makeWorkBuffer(glm::ivec2 size, GLuint& framebuffer, GLuint& depth, GLuint& colour, GLuint& primitive);
   void clearWork();
   CsgTree prepare(const CsgScene& scene, double time);
   static bool subtracted(const CsgProduct& p, int primitive);
@@ -146,8 +147,9 @@ class Csg final : public Lesson {
   // The work buffer: depth and stencil, the pass stepper's colour, and per pixel the primitive
   // whose fragment wrote the depth (its index + 1; 0 none), which the merge draws alone.
   GLuint work_ = 0, workDepth_ = 0, workColour_ = 0, workPrimitive_ = 0;
-  // The automatic method's layered products: the nearest of their layers' surfaces, as above.
-  GLuint nearest_ = 0, nearestDepth_ = 0, nearestPrimitive_ = 0;
+  // The automatic method's layered products: the nearest of their layers' surfaces, a buffer made
+  // as the work buffer is (the two swap).
+  GLuint nearest_ = 0, nearestDepth_ = 0, nearestColour_ = 0, nearestPrimitive_ = 0;
   glm::ivec2 workSize_{0};
   bool frameToClear_ = false;  // the frame not yet cleared this frame (clearFrame)
   bool mirroredView_ = false;  // this frame's view matrix has a negative determinant

@@ -36,6 +36,7 @@ Csg::~Csg() {
   if (workPrimitive_) glDeleteTextures(1, &workPrimitive_);
   if (nearest_) glDeleteFramebuffers(1, &nearest_);
   if (nearestDepth_) glDeleteTextures(1, &nearestDepth_);
+  if (nearestColour_) glDeleteRenderbuffers(1, &nearestColour_);
   if (nearestPrimitive_) glDeleteTextures(1, &nearestPrimitive_);
 }
 
@@ -43,60 +44,48 @@ Csg::~Csg() {
 // the depth), a colour the passes paint the surface into for the pass stepper, and an unsigned
 // integer texture (the merge reads it) where the fragment that writes the depth writes its
 // primitive's index + 1 (drawSelected). glClear leaves that one undefined: it is read only where
-// a target's fragment wrote the depth.
+// a target's fragment wrote the depth. The nearest layers' buffer is made the same way: the
+// automatic method trims a product's first layer in the work buffer and then swaps the two
+// (keepNearest), so either may be the work buffer.
 void Csg::workBuffer(glm::ivec2 size) {
   if (work_ && workSize_ == size) return;
-  if (!work_) {
-    glGenFramebuffers(1, &work_);
-    glGenTextures(1, &workDepth_);
-    glGenRenderbuffers(1, &workColour_);
-    glGenTextures(1, &workPrimitive_);
-  }
   workSize_ = size;
-  glBindTexture(GL_TEXTURE_2D, workDepth_);
+  makeWorkBuffer(size, work_, workDepth_, workColour_, workPrimitive_);
+  makeWorkBuffer(size, nearest_, nearestDepth_, nearestColour_, nearestPrimitive_);
+}
+
+void Csg::makeWorkBuffer(glm::ivec2 size, GLuint& framebuffer, GLuint& depth, GLuint& colour, GLuint& primitive) {
+  if (!framebuffer) {
+    glGenFramebuffers(1, &framebuffer);
+    glGenTextures(1, &depth);
+    glGenRenderbuffers(1, &colour);
+    glGenTextures(1, &primitive);
+  }
+  glBindTexture(GL_TEXTURE_2D, depth);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH32F_STENCIL8, size.x, size.y, 0, GL_DEPTH_STENCIL,
                GL_FLOAT_32_UNSIGNED_INT_24_8_REV, nullptr);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_NONE);
   glBindTexture(GL_TEXTURE_2D, 0);
-  glBindTexture(GL_TEXTURE_2D, workPrimitive_);
+  glBindTexture(GL_TEXTURE_2D, primitive);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_R32UI, size.x, size.y, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glBindTexture(GL_TEXTURE_2D, 0);
-  glBindRenderbuffer(GL_RENDERBUFFER, workColour_);
+  glBindRenderbuffer(GL_RENDERBUFFER, colour);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size.x, size.y);
   glBindRenderbuffer(GL_RENDERBUFFER, 0);
-  glBindFramebuffer(GL_FRAMEBUFFER, work_);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, workDepth_, 0);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, workColour_);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, workPrimitive_, 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, primitive, 0);
   const GLenum drawBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   glDrawBuffers(2, drawBuffers);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw std::runtime_error("14-csg: the work buffer is incomplete");
-
-  // The nearest layers' buffer: a depth texture and a primitive texture, as the work buffer's.
-  if (!nearest_) {
-    glGenFramebuffers(1, &nearest_);
-    glGenTextures(1, &nearestDepth_);
-    glGenTextures(1, &nearestPrimitive_);
-  }
-  for (const auto& [texture, format, pixels, type] :
-       {std::tuple{nearestDepth_, GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT},
-        std::tuple{nearestPrimitive_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT}}) {
-    glBindTexture(GL_TEXTURE_2D, texture);
-    glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(format), size.x, size.y, 0, pixels, type, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  }
-  glBindTexture(GL_TEXTURE_2D, 0);
-  glBindFramebuffer(GL_FRAMEBUFFER, nearest_);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, nearestDepth_, 0);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, nearestPrimitive_, 0);
-  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-    throw std::runtime_error("14-csg: the nearest layers' buffer is incomplete");
+  // Its colour, which the pass stepper may show before a pass paints it, starts as the background.
+  glClearBufferfv(GL_COLOR, 0, glm::value_ptr(kBackground));
 }
 
 // Clears the bound work buffer: its colour (draw buffer 0) to the background, its depth and stencil.

@@ -278,7 +278,7 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
   // 3. Merge: the targets drawn into the frame where they are the trimmed surface (or, the
   // automatic method, the surface kept where it is the nearest layer's yet).
   if (automatic)
-    keepNearest(f);
+    keepNearest(f, layer);
   else
     mergeIntoFrame(f, p, targets);
   return true;

@@ -5,7 +5,7 @@
 uniform sampler2D productDepth;       // the layer's trimmed surface, window depth per pixel
 uniform usampler2D productPrimitive;  // and the primitive whose fragment wrote that depth
 
-layout(location = 0) out uint nearestPrimitive;
+layout(location = 1) out uint nearestPrimitive;  // the buffers are made alike (Csg::workBuffer)
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
