@@ -5,8 +5,9 @@
 // window's ramp, in grey or as bit planes, the depth as the window shows it), a pass to stop after
 // (the pass stepper), the orbit camera, a scene file (the scene lessons), and the snapshot the
 // tests read.
-// A bad setting is one line on the page, as on the command line, and nothing is drawn; a scene file
-// that cannot be read is one line on the page, and the lesson keeps its last good scene.
+// What the URL asks for and the lesson refuses is one line on the page, as on the command line, and
+// the lesson is drawn without it; a scene file that cannot be read is one line on the page, and the
+// lesson keeps its last good scene.
 #ifdef __EMSCRIPTEN__
 #include <emscripten/emscripten.h>
 
