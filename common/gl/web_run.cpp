@@ -87,6 +87,12 @@ std::string lessonJson(const WebRun& r) {
     options.push_back({{"name", o.name}, {"help", o.help}, {"value", o.value}, {"min", o.min}, {"max", o.max}});
   nlohmann::ordered_json variants = nlohmann::ordered_json::array();
   for (const Variant& v : info.variants) variants.push_back({{"name", v.name}, {"help", v.help}});
+  // The options away from the variant's values, as the URL's set= gives them ("name:value").
+  std::vector<std::string> changed;
+  const std::vector<Option> ofVariant = optionsFor(info, r.session->variant, {});
+  for (std::size_t i = 0; i < r.session->options.size(); ++i)
+    if (r.session->options[i].value != ofVariant[i].value)
+      changed.push_back(r.session->options[i].name + ":" + std::to_string(r.session->options[i].value));
   const GlFeatures& f = r.session->context->features();
   return nlohmann::ordered_json{{"id", info.id},
                                 {"title", info.title},
@@ -101,6 +107,7 @@ std::string lessonJson(const WebRun& r) {
                                 {"features", f.summary()},
                                 {"readsScenes", r.readsScenes},
                                 {"urlRefused", r.urlRefused},
+                                {"changed", changed},
                                 {"scene", r.commandLine.scene ? r.commandLine.scene->string() : ""},
                                 {"scenes", r.readsScenes ? sceneFiles() : std::vector<std::string>{}},
                                 {"orbit", {r.session->camera.azimuthDeg, r.session->camera.elevationDeg,
@@ -190,12 +197,18 @@ void renderAndShow(double time) {
   stencil_page_frame(time, passes.dump().c_str());
 }
 
-// Runs `work`; an error stops playing and is said on the page. Returns whether it succeeded.
+// Runs `work`; an error stops playing and is said on the page, and a change the lesson refuses
+// (UsageError: an option out of range) is said and leaves the lesson as it was. Returns whether
+// it succeeded.
 template <typename Work>
 bool guarded(Work work) {
   try {
     work();
     return true;
+  } catch (const UsageError& e) {
+    std::cerr << run->declared.id << ": " << e.what() << "\n";
+    stencil_page_refused(e.what());
+    return false;
   } catch (const std::exception& e) {
     run->playing = false;
     emscripten_cancel_main_loop();
@@ -261,38 +274,31 @@ int runWeb(const LessonInfo& info, const SceneLessonFactory& make, int argc, cha
   run->readsScenes = readsScenes;
   const bool ok = guarded([&] {
     // What the URL asks for and the lesson refuses (a variant it lacks, an option out of range, a
-    // scene file it cannot read) is said on the page, and the lesson drawn without it, so that
-    // its controls are there to choose again: the URL's settings on the lesson's own scene, else
-    // the lesson as it starts.
-    const auto refuse = [&](const UsageError& e) {
-      std::cerr << info.id << ": " << e.what() << "\n";
-      stencil_page_refused(e.what());
-      run->urlRefused = true;
-    };
-    char* programOnly[] = {argv[0], nullptr};
-    const CommandLine asItStarts = parseCommandLine(run->declared, 1, programOnly);
-    std::vector<CommandLine> tries;
-    try {
-      tries.push_back(parseCommandLine(run->declared, argc, argv));
-      if (tries[0].scene && !readsScenes)
-        throw UsageError("--scene: " + info.id + " draws only its own scene; the scene lessons read scene files");
-      if (tries[0].scene) {
-        tries.push_back(tries[0]);
-        tries.back().scene.reset();
-      }
-    } catch (const UsageError& e) {
-      refuse(e);
-      tries.clear();
+    // scene file it cannot read) is said on the page, and the lesson drawn without it, so that its
+    // controls are there to choose again: the URL's settings less the first pair of them (a flag
+    // and its value: lesson.js gives only pairs) whose leaving out lets the lesson start, else the
+    // lesson as it starts.
+    std::vector<std::vector<char*>> tries{{argv, argv + argc}};
+    for (int k = 1; k + 1 < argc; k += 2) {
+      tries.push_back({argv, argv + argc});
+      tries.back().erase(tries.back().begin() + k, tries.back().begin() + k + 2);
     }
-    tries.push_back(asItStarts);
+    if (argc > 1) tries.push_back({argv[0]});
     for (std::size_t i = 0;; ++i) {
-      run->commandLine = tries[i];
       try {
-        startSession(tries[i].scene);
+        const CommandLine cl = parseCommandLine(run->declared, static_cast<int>(tries[i].size()), tries[i].data());
+        if (cl.scene && !readsScenes)
+          throw UsageError("--scene: " + info.id + " draws only its own scene; the scene lessons read scene files");
+        run->commandLine = cl;
+        startSession(cl.scene);
         break;
       } catch (const UsageError& e) {
         if (i + 1 == tries.size()) throw;
-        refuse(e);
+        if (i == 0) {  // said once: what the URL asks for
+          std::cerr << info.id << ": " << e.what() << "\n";
+          stencil_page_refused(e.what());
+          run->urlRefused = true;
+        }
       }
     }
     const GlFeatures& f = run->session->context->features();

@@ -53,7 +53,8 @@ function updateUrl(changes) {
     if (value === null || value === undefined || value === '') params.delete(key);
     else params.set(key, value);
   }
-  const query = params.toString();
+  // ':', ',' and '/' read as themselves in a query: the link stays readable.
+  const query = params.toString().replace(/%3A/gi, ':').replace(/%2C/gi, ',').replace(/%2F/gi, '/');
   history.replaceState(null, '', query ? '?' + query : location.pathname);
 }
 
@@ -77,6 +78,9 @@ window.StencilPage = {
   // keeps running as it was.
   refused(message) {
     message = inPagesWords(message);
+    // Refusals of one load (a URL with two bad values) are all said.
+    if (statusLine.className === 'error' && performance.now() - refusedAt < 1000)
+      message = statusLine.textContent + '; ' + message;
     statusLine.textContent = message;
     statusLine.className = 'error';
     refusedAt = performance.now();
@@ -117,7 +121,9 @@ window.StencilPage = {
     lesson = info;  // the program has logged its renderer and features
     if (first && info.urlRefused) {  // the URL keeps what the lesson draws instead
       const scene = info.scene.startsWith('/scenes/') ? info.scene.slice('/scenes/'.length) : null;
-      updateUrl({variant: info.variant, set: settingsOf(info), time: info.time.toFixed(2), size: null, scene});
+      const drawn = (key, value) => params.has(key) ? value : null;
+      updateUrl({variant: drawn('variant', info.variant), set: info.changed.join(',') || null,
+                 time: drawn('time', exactly(info.time)), size: drawn('size', info.size.join('x')), scene});
     }
     if (first) applyUrlOrbit();
     if (snapshot) return;
@@ -154,12 +160,12 @@ function settingsOf(info) {
 function makeControls(info) {
   const box = document.getElementById('controls');
   box.textContent = '';
-  const label = (text, element, title) => {
+  const label = (text, element, title, parent = box) => {
     const l = document.createElement('label');
     l.textContent = text;
     if (title) l.title = title.replace(/\s+/g, ' ');  // the help's line breaks are the terminal's
     l.appendChild(element);
-    box.appendChild(l);
+    parent.appendChild(l);
     return element;
   };
   const variant = document.createElement('select');
@@ -183,31 +189,6 @@ function makeControls(info) {
   variantHelp.className = 'help';
   variantHelp.textContent = info.variants.find(v => v.name === info.variant)?.help ?? '';
   box.appendChild(variantHelp);
-  for (const o of info.options) {
-    const input = document.createElement('input');
-    input.id = 'option-' + o.name;
-    if (o.min === 0 && o.max === 1) {
-      input.type = 'checkbox';
-      input.checked = o.value !== 0;
-    } else {
-      input.type = 'number';
-      input.min = o.min;
-      input.max = o.max;
-      input.value = o.value;
-    }
-    input.addEventListener('change', () => {
-      const value = input.type === 'checkbox' ? (input.checked ? 1 : 0) : Number(input.value);
-      refusedAt = -Infinity;  // the frame's line again, unless this one is refused too
-      if (Module.ccall('stencil_web_option', 'number', ['string', 'number'], [o.name, value]) !== 0) {
-        if (input.type === 'checkbox') input.checked = o.value !== 0;  // refused: the box shows what is drawn
-        else input.value = o.value;
-        return;
-      }
-      o.value = value;
-      updateUrl({set: settingsOf(info)});
-    });
-    label(o.name, input, o.help);
-  }
   const time = document.createElement('input');
   time.id = 'time';
   time.type = 'number';
@@ -274,6 +255,40 @@ function makeControls(info) {
   };
   play.addEventListener('click', () => setPlaying(!playing));
   box.appendChild(play);
+  // The lesson's options after the controls every lesson has, so that those stay near the picture.
+  const options = document.createElement('div');
+  options.id = 'options';
+  box.appendChild(options);
+  for (const o of info.options) {
+    const input = document.createElement('input');
+    input.id = 'option-' + o.name;
+    if (o.min === 0 && o.max === 1) {
+      input.type = 'checkbox';
+      input.checked = o.value !== 0;
+    } else {
+      input.type = 'number';
+      input.min = o.min;
+      input.max = o.max;
+      input.value = o.value;
+    }
+    input.addEventListener('change', () => {
+      const value = input.type === 'checkbox' ? (input.checked ? 1 : 0) : Number(input.value);
+      refusedAt = -Infinity;  // the frame's line again, unless this one is refused too
+      if (!Number.isInteger(value)) {
+        StencilPage.refused('option \'' + o.name + '\' takes whole numbers ' + o.min + '..' + o.max + ', got ' + input.value);
+        input.value = o.value;
+        return;
+      }
+      if (Module.ccall('stencil_web_option', 'number', ['string', 'number'], [o.name, value]) !== 0) {
+        if (input.type === 'checkbox') input.checked = o.value !== 0;  // refused: the box shows what is drawn
+        else input.value = o.value;
+        return;
+      }
+      o.value = value;
+      updateUrl({set: settingsOf(info)});
+    });
+    label(o.name, input, o.help, options);
+  }
   // The URL's view and pass; one it cannot show is said, and left out of the URL.
   if (params.has('view') && !views.includes(params.get('view'))) {
     StencilPage.refused('view=' + params.get('view') + ': expected ' + views.join(', '));
@@ -430,8 +445,10 @@ function setUpOrbit() {
 function applyUrlOrbit() {
   if (!params.has('orbit')) return;
   const wanted = params.get('orbit').split(',').map(Number);
-  if (wanted.length !== 3 || !wanted.every(Number.isFinite) || wanted[2] <= 0)
-    return StencilPage.refused('orbit=' + params.get('orbit') + ': expected AZIMUTH,ELEVATION,DISTANCE (degrees, degrees, world units > 0)');
+  if (wanted.length !== 3 || !wanted.every(Number.isFinite) || wanted[2] <= 0) {
+    StencilPage.refused('orbit=' + params.get('orbit') + ': expected AZIMUTH,ELEVATION,DISTANCE (degrees, degrees, world units > 0)');
+    return updateUrl({orbit: null});
+  }
   const [azimuth, elevation, distance] = orbitValue();
   Module._stencil_web_orbit(wanted[0] - azimuth, wanted[1] - elevation, wanted[2] / distance);
 }

@@ -103,6 +103,10 @@ class Dissolve final : public Lesson {
     const int k = dissolveState(f);
     f.count("state", static_cast<std::uint64_t>(k));
     framebuffer_ = f.framebuffer();
+    // The colour and depth of the last frame go (the stencil stays: it holds the pattern), so that
+    // the passes before the dissolve show what they wrote, not the frame before.
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
     // 1. The pattern, once: written only when the pattern or the size changes. The stencil keeps
     // it from frame to frame (and keeps what the brush sprayed into it).
