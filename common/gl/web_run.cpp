@@ -35,7 +35,8 @@ EM_JS(void, stencil_page_image, (const char* id, const unsigned char* png, int s
 EM_JS(void, stencil_page_ready, (const char* lesson), { StencilPage.ready(JSON.parse(UTF8ToString(lesson))); });
 EM_JS(void, stencil_page_frame, (double time, const char* passes),
       { StencilPage.frame(time, JSON.parse(UTF8ToString(passes))); });
-EM_JS(void, stencil_page_legend, (const char* legend), { StencilPage.legend(JSON.parse(UTF8ToString(legend))); });
+EM_JS(void, stencil_page_legend, (const char* legend),
+      { StencilPage.legend(JSON.parse(UTF8ToString(legend))); });
 EM_JS(double, stencil_page_now, (), { return performance.now(); });
 
 namespace stencil {
@@ -94,24 +95,24 @@ std::string lessonJson(const WebRun& r) {
     if (r.session->options[i].value != ofVariant[i].value)
       changed.push_back(r.session->options[i].name + ":" + std::to_string(r.session->options[i].value));
   const GlFeatures& f = r.session->context->features();
-  return nlohmann::ordered_json{{"id", info.id},
-                                {"title", info.title},
-                                {"summary", info.summary},
-                                {"variant", r.session->variant},
-                                {"variants", variants},
-                                {"options", options},
-                                {"passes", info.passes},
-                                {"time", r.time},
-                                {"size", {r.session->framebuffer->width(), r.session->framebuffer->height()}},
-                                {"renderer", f.renderer},
-                                {"features", f.summary()},
-                                {"readsScenes", r.readsScenes},
-                                {"urlRefused", r.urlRefused},
-                                {"changed", changed},
-                                {"scene", r.commandLine.scene ? r.commandLine.scene->string() : ""},
-                                {"scenes", r.readsScenes ? sceneFiles() : std::vector<std::string>{}},
-                                {"orbit", {r.session->camera.azimuthDeg, r.session->camera.elevationDeg,
-                                           r.session->camera.distance}}}
+  return nlohmann::ordered_json{
+      {"id", info.id},
+      {"title", info.title},
+      {"summary", info.summary},
+      {"variant", r.session->variant},
+      {"variants", variants},
+      {"options", options},
+      {"passes", info.passes},
+      {"time", r.time},
+      {"size", {r.session->framebuffer->width(), r.session->framebuffer->height()}},
+      {"renderer", f.renderer},
+      {"features", f.summary()},
+      {"readsScenes", r.readsScenes},
+      {"urlRefused", r.urlRefused},
+      {"changed", changed},
+      {"scene", r.commandLine.scene ? r.commandLine.scene->string() : ""},
+      {"scenes", r.readsScenes ? sceneFiles() : std::vector<std::string>{}},
+      {"orbit", {r.session->camera.azimuthDeg, r.session->camera.elevationDeg, r.session->camera.distance}}}
       .dump();
 }
 
@@ -151,7 +152,8 @@ Image depthViewPicture(const std::vector<float>& depth, nlohmann::ordered_json& 
 // grey's values present, each [value, pixels, "#rrggbb"], grey's rule first; the bit planes' layout.
 Image stencilViewPicture(const Image& stencil, int view, nlohmann::ordered_json& legend) {
   if (view == 3) {
-    legend = {{"rule", "the eight bit planes: bit 0 top left to bit 7 bottom right, white where the bit is set"}};
+    legend = {
+        {"rule", "the eight bit planes: bit 0 top left to bit 7 bottom right, white where the bit is set"}};
     return stencilBitPlanes(stencil);
   }
   const StencilLegend values = stencilLegend(stencil, view == 2);
@@ -182,8 +184,9 @@ void renderAndShow(double time) {
   if (run->view == 4)
     showPicture(depthViewPicture(snapshot ? snapshot->depth : s.framebuffer->readDepth(), legend), w, h);
   else if (run->view != 0)
-    showPicture(stencilViewPicture(snapshot ? snapshot->stencil : s.framebuffer->readStencil(), run->view, legend),
-                w, h);
+    showPicture(
+        stencilViewPicture(snapshot ? snapshot->stencil : s.framebuffer->readStencil(), run->view, legend), w,
+        h);
   else if (snapshot)
     showPicture(snapshot->colour, w, h);
   else {
@@ -286,9 +289,11 @@ int runWeb(const LessonInfo& info, const SceneLessonFactory& make, int argc, cha
     if (argc > 1) tries.push_back({argv[0]});
     for (std::size_t i = 0;; ++i) {
       try {
-        const CommandLine cl = parseCommandLine(run->declared, static_cast<int>(tries[i].size()), tries[i].data());
+        const CommandLine cl =
+            parseCommandLine(run->declared, static_cast<int>(tries[i].size()), tries[i].data());
         if (cl.scene && !readsScenes)
-          throw UsageError("--scene: " + info.id + " draws only its own scene; the scene lessons read scene files");
+          throw UsageError("--scene: " + info.id +
+                           " draws only its own scene; the scene lessons read scene files");
         run->commandLine = cl;
         startSession(cl.scene);
         break;
