@@ -199,7 +199,7 @@ def check_variant(browser, base, args, lesson, variant, out):
             return None, ""
         sides = []
         for setting in settings:
-            side = out / f"native-{setting.replace('=', '-')}.png"
+            side = out / f"native-{'' if picture == 'colour' else 'stencil-'}{setting.replace('=', '-')}.png"
             flag = "--out" if picture == "colour" else "--stencil-out"
             _, error = run_native(args.native, args, variant, ["--set", setting, flag, str(side)])
             if error:
