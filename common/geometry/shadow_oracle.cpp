@@ -7,6 +7,7 @@
 
 #include "geometry/projection.h"
 #include "geometry/raycast.h"
+#include "geometry/shadow_volume.h"
 
 namespace stencil {
 
@@ -25,9 +26,61 @@ float selfIntersectionOffset(const glm::vec3& point, const glm::vec3& rayOrigin,
   return std::max(1e-4f, glm::dot(glm::abs(normal), error));
 }
 
-bool onEdge(const std::vector<PixelClass>& oracle, const std::vector<int>* surfaces, glm::ivec2 size, int x,
-            int y) {
+// GL's least sub-pixel precision (GL_SUBPIXEL_BITS >= 4): how far from where it lies a conforming
+// rasterizer may put a vertex, in pixels, along x and along y.
+constexpr double kLeastSnap = 1.0 / 16.0;
+
+// One side of a shadow volume: a possible silhouette edge a -> b extruded away from the light, in
+// the plane with normal n (unnormalized), which holds a, b and the light (or its direction).
+struct VolumeSide {
+  glm::dvec3 a, b, n;
+  // Its plane's window depth at pixel (x, yTop): depth + dx x + dy yTop (a plane's depth is affine
+  // in the picture's coordinates).
+  double depth = 0.0, dx = 0.0, dy = 0.0;
+};
+
+// Every caster's volume sides for the light (xyz / w, or the direction towards it where w = 0),
+// in the frame the rays are cast in: world less `origin`. The edges are found as the lessons find
+// them: facesLight on the welded mesh in the object's own space, then possibleSilhouetteEdges.
+std::vector<VolumeSide> volumeSides(const std::vector<OracleObject>& objectsInWorld, const glm::vec4& worldLight,
+                                    const glm::dvec3& origin, const glm::dvec4& light) {
+  std::vector<VolumeSide> sides;
+  for (const OracleObject& o : objectsInWorld) {
+    if (!o.casts || !o.mesh) continue;
+    const PreparedCaster caster = prepareCaster(*o.mesh);
+    const std::vector<bool> lit = facesLight(caster.mesh, glm::inverse(o.model) * worldLight);
+    const glm::dmat4 model(o.model);
+    for (const SilhouetteEdge& e : possibleSilhouetteEdges(caster.adjacency, lit)) {
+      const glm::dvec3 a = glm::dvec3(model * glm::dvec4(glm::dvec3(caster.mesh.positions[e.v0]), 1.0)) - origin;
+      const glm::dvec3 b = glm::dvec3(model * glm::dvec4(glm::dvec3(caster.mesh.positions[e.v1]), 1.0)) - origin;
+      const glm::dvec3 n = light.w != 0.0 ? glm::cross(a - glm::dvec3(light), b - glm::dvec3(light))
+                                          : glm::cross(b - a, -glm::dvec3(light));
+      if (glm::dot(n, n) > 0.0) sides.push_back({a, b, n});
+    }
+  }
+  return sides;
+}
+
+// Whether x, a point of the side's plane, lies on the side: beyond the edge, seen from the light,
+// and between the two rays from the light (or along its direction) through a and b.
+bool onSide(const VolumeSide& s, const glm::dvec3& x, const glm::dvec4& light) {
+  const double nn = glm::dot(s.n, s.n);
+  if (light.w != 0.0) {  // x - L = alpha (a - L) + beta (b - L): alpha, beta >= 0, alpha + beta >= 1
+    const glm::dvec3 l(light);
+    const double alpha = glm::dot(glm::cross(x - l, s.b - l), s.n) / nn;
+    const double beta = glm::dot(glm::cross(s.a - l, x - l), s.n) / nn;
+    return alpha >= 0.0 && beta >= 0.0 && alpha + beta >= 1.0;
+  }
+  const glm::dvec3 away = -glm::dvec3(light);  // x - a = u (b - a) + s away: 0 <= u <= 1, s >= 0
+  const double u = glm::dot(glm::cross(x - s.a, away), s.n) / nn;
+  const double along = glm::dot(glm::cross(s.b - s.a, x - s.a), s.n) / nn;
+  return u >= 0.0 && u <= 1.0 && along >= 0.0;
+}
+
+bool onEdge(const std::vector<PixelClass>& oracle, const std::vector<int>* surfaces, const std::vector<bool>* ties,
+            glm::ivec2 size, int x, int y) {
   const auto i = static_cast<std::size_t>(y * size.x + x);
+  if (ties && (*ties)[i]) return true;
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) {
       const int nx = x + dx, ny = y + dy;
@@ -39,9 +92,9 @@ bool onEdge(const std::vector<PixelClass>& oracle, const std::vector<int>* surfa
 }
 
 void checkSizes(const std::vector<PixelClass>& oracle, const std::vector<bool>& lit, glm::ivec2 size,
-                const std::vector<int>* surfaces) {
+                const std::vector<int>* surfaces, const std::vector<bool>* ties) {
   const auto n = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y);
-  if (oracle.size() != n || lit.size() != n || (surfaces && surfaces->size() != n))
+  if (oracle.size() != n || lit.size() != n || (surfaces && surfaces->size() != n) || (ties && ties->size() != n))
     throw std::invalid_argument("oracle comparison: the images have different sizes");
 }
 
@@ -49,7 +102,8 @@ void checkSizes(const std::vector<PixelClass>& oracle, const std::vector<bool>& 
 
 std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objectsInWorld,
                                        const glm::vec4& worldLight, const glm::mat4& viewProjection,
-                                       glm::ivec2 size, float lightRadius, std::vector<int>* surfaces) {
+                                       glm::ivec2 size, float lightRadius, std::vector<int>* surfaces,
+                                       std::vector<bool>* ties) {
   // What a pixel sees and whether it is lit do not change when the objects, the camera and the
   // light move together. Cast from drawingOrigin near the eye (the centre of the near plane), so
   // that a ray's start and every hit carry rounding of their distance from the eye, as the pixel's
@@ -104,8 +158,73 @@ std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objectsI
   from[3] = glm::dvec4(glm::dvec3(origin), 1.0);
   const glm::dmat4 inverse = glm::inverse(glm::dmat4(viewProjection) * from);  // clip to (world - origin)
 
+  // For the ties: the pixels' rays in double, the window depth of a point (clip z / w: any
+  // affine map of it, GL's or the reversed one, scales depths and their moves alike) and of the
+  // point where a neighbouring pixel's ray meets a plane, the volume sides.
+  const glm::dmat4 toClip = glm::dmat4(viewProjection) * from;
+  const glm::dvec4 lightHere = light.w != 0.0f ? glm::dvec4(glm::dvec3(worldLight) / double(worldLight.w) -
+                                                                 glm::dvec3(origin), 1.0)
+                                               : glm::dvec4(glm::dvec3(worldLight), 0.0);
+  std::vector<VolumeSide> sides =
+      ties ? volumeSides(objectsInWorld, worldLight, glm::dvec3(origin), lightHere) : std::vector<VolumeSide>{};
+  // cameraRay's ray kept in double (a pixel off the picture too): planes' depths are extrapolated
+  // across the picture from a pixel's neighbours.
+  const auto rayAt = [&](int x, int yTop) {
+    const double ndcX = (x + 0.5) / size.x * 2.0 - 1.0, ndcY = 1.0 - (yTop + 0.5) / size.y * 2.0;
+    const glm::dvec4 nearPoint = inverse * glm::dvec4(ndcX, ndcY, -1.0, 1.0);
+    const glm::dvec4 middle = inverse * glm::dvec4(ndcX, ndcY, 0.0, 1.0);  // finite for Pinf too
+    const glm::dvec3 o = glm::dvec3(nearPoint) / nearPoint.w;
+    return std::pair{o, glm::dvec3(middle) / middle.w - o};
+  };
+  const auto depthOf = [&](const glm::dvec3& p) {
+    const glm::dvec4 c = toClip * glm::dvec4(p, 1.0);
+    return c.z / c.w;
+  };
+  // The depth where pixel (x, yTop)'s ray meets the plane through q with normal n, and how much it
+  // changes to the next pixel in x and in y (a plane's window depth is affine in x and y).
+  const auto planeDepth = [&](int x, int yTop, const glm::dvec3& q, const glm::dvec3& n, double& moves) {
+    const auto at = [&](int px, int py) {
+      const auto [o, d] = rayAt(px, py);
+      return depthOf(o + glm::dot(n, q - o) / glm::dot(n, d) * d);
+    };
+    const double z = at(x, yTop);
+    const int dx = x + 1 < size.x ? 1 : -1, dy = yTop + 1 < size.y ? 1 : -1;
+    moves = std::abs(at(x + dx, yTop) - z) + std::abs(at(x, yTop + dy) - z);
+    return z;
+  };
+  for (VolumeSide& side : sides) {  // each plane's depth over the picture, from three pixels' rays
+    double moves = 0.0;
+    const double atOrigin = planeDepth(0, 0, side.a, side.n, moves);
+    side.depth = atOrigin;
+    side.dx = planeDepth(1, 0, side.a, side.n, moves) - atOrigin;
+    side.dy = planeDepth(0, 1, side.a, side.n, moves) - atOrigin;
+  }
+  std::erase_if(sides, [](const VolumeSide& s) {  // a plane through the eye: a line in the picture
+    return !std::isfinite(s.depth) || !std::isfinite(s.dx) || !std::isfinite(s.dy);
+  });
+  const auto tie = [&](int x, int yTop, const glm::vec3& hitPoint, const glm::vec3& normal) {
+    double surfaceMoves = 0.0;
+    const double surface = planeDepth(x, yTop, glm::dvec3(hitPoint), glm::dvec3(normal), surfaceMoves);
+    for (const VolumeSide& side : sides) {
+      const double depth = side.depth + side.dx * x + side.dy * yTop;
+      // Only the snapping: a depth buffer's rounding is the lesson's choice of buffer (its 24-bit
+      // fallback is meant to show what that costs), and these doubles' own rounding is far below.
+      const double rounding = 1e-12 * (1.0 + std::max(std::abs(depth), std::abs(surface)));
+      if (std::abs(depth - surface) > kLeastSnap * (std::abs(side.dx) + std::abs(side.dy) + surfaceMoves) + rounding)
+        continue;
+      // Close enough in depth: a tie where the pixel's ray meets the side itself, not its plane.
+      const auto [o, d] = rayAt(x, yTop);
+      const double across = glm::dot(side.n, d);
+      if (across == 0.0) continue;  // the side edge-on to the ray
+      const double t = glm::dot(side.n, side.a - o) / across;
+      if (t > 0.0 && onSide(side, o + t * d, lightHere)) return true;
+    }
+    return false;
+  };
+
   std::vector<PixelClass> classes(static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y));
   if (surfaces) surfaces->assign(classes.size(), -1);
+  if (ties) ties->assign(classes.size(), false);
   for (int y = 0; y < size.y; ++y)
     for (int x = 0; x < size.x; ++x) {
       PixelClass& c = classes[static_cast<std::size_t>(y * size.x + x)];
@@ -123,6 +242,7 @@ std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objectsI
       // Start the shadow ray a hair off the surface, on the side the camera sees, so the
       // receiver does not shadow itself through rounding.
       const glm::vec3 point = ray.origin + hit->t * ray.direction;
+      if (ties) (*ties)[static_cast<std::size_t>(y * size.x + x)] = tie(x, y, point, hit->normal);
       const glm::vec3 toLight = light.w == 0.0f ? glm::normalize(glm::vec3(light))
                                                 : glm::normalize(glm::vec3(light) / light.w - point);
       const bool beyondRadius =
@@ -152,8 +272,8 @@ std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objectsI
 }
 
 OracleReport compareWithOracle(const std::vector<PixelClass>& oracle, const std::vector<bool>& litInImage,
-                               glm::ivec2 size, const std::vector<int>* surfaces) {
-  checkSizes(oracle, litInImage, size, surfaces);
+                               glm::ivec2 size, const std::vector<int>* surfaces, const std::vector<bool>* ties) {
+  checkSizes(oracle, litInImage, size, surfaces, ties);
   OracleReport report;
   for (int y = 0; y < size.y; ++y)
     for (int x = 0; x < size.x; ++x) {
@@ -162,15 +282,24 @@ OracleReport compareWithOracle(const std::vector<PixelClass>& oracle, const std:
       report.shadowedPixels += oracle[i] == PixelClass::Shadowed;
       if ((oracle[i] == PixelClass::Lit) == litInImage[i]) continue;
       ++report.disagreements;
-      report.onEdges += onEdge(oracle, surfaces, size, x, y);
+      report.onEdges += onEdge(oracle, surfaces, ties, size, x, y);
     }
   return report;
 }
 
+std::vector<bool> oracleEdges(const std::vector<PixelClass>& oracle, glm::ivec2 size,
+                              const std::vector<int>* surfaces, const std::vector<bool>* ties) {
+  checkSizes(oracle, std::vector<bool>(oracle.size()), size, surfaces, ties);
+  std::vector<bool> edges(oracle.size());
+  for (int y = 0; y < size.y; ++y)
+    for (int x = 0; x < size.x; ++x) edges[static_cast<std::size_t>(y * size.x + x)] = onEdge(oracle, surfaces, ties, size, x, y);
+  return edges;
+}
+
 std::vector<std::uint8_t> oraclePicture(const std::vector<PixelClass>& oracle,
                                         const std::vector<bool>& litInImage, glm::ivec2 size,
-                                        const std::vector<int>* surfaces) {
-  checkSizes(oracle, litInImage, size, surfaces);
+                                        const std::vector<int>* surfaces, const std::vector<bool>* ties) {
+  checkSizes(oracle, litInImage, size, surfaces, ties);
   std::vector<std::uint8_t> rgba;
   rgba.reserve(oracle.size() * 4);
   for (int y = 0; y < size.y; ++y)
@@ -178,7 +307,7 @@ std::vector<std::uint8_t> oraclePicture(const std::vector<PixelClass>& oracle,
       const auto i = static_cast<std::size_t>(y * size.x + x);
       glm::u8vec3 c;
       if ((oracle[i] == PixelClass::Lit) != litInImage[i])
-        c = onEdge(oracle, surfaces, size, x, y) ? glm::u8vec3(240, 200, 0) : glm::u8vec3(255, 0, 0);
+        c = onEdge(oracle, surfaces, ties, size, x, y) ? glm::u8vec3(240, 200, 0) : glm::u8vec3(255, 0, 0);
       else if (oracle[i] == PixelClass::Lit)
         c = {210, 210, 200};
       else if (oracle[i] == PixelClass::Shadowed)

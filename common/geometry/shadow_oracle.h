@@ -46,10 +46,21 @@ struct OracleObject {
 // ray meets, -1 for nothing, and, where the side of a caster the ray meets is turned from the
 // light, that index plus the number of objects: where it changes, the pixel lies on a
 // silhouette or on a caster's terminator, where its own volume leaves its surface.
+// When ties is given, it receives per pixel whether a side of a caster's shadow volume (one of its
+// possible silhouette edges, as facesLight and possibleSilhouetteEdges find them on the welded
+// mesh, extruded away from the light) passes the surface the ray meets closer in depth than a
+// rasterizer's vertex snapping can move them: GL asks for 4 sub-pixel bits, so each vertex may
+// land up to 1/16 pixel from where it lies, and a plane's window depth at a pixel may move by
+// 1/16 of its change over a pixel in x plus that in y. Where the side's depth and the surface's
+// are closer than the two planes' moves together, a conforming rasterizer may count the side on
+// either side of the surface: the count there is not the algorithm's to decide. (The depth
+// buffer's own rounding is not forgiven: its format is the lesson's choice.) Such pixels lie where a side grazes a surface, next to a terminator
+// seen at a grazing angle, in a band that may be wider than the 3x3 pixels compareWithOracle's
+// edge rule gives the terminator.
 std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>&, const glm::vec4& light,
                                        const glm::mat4& viewProjection, glm::ivec2 size,
                                        float lightRadius = std::numeric_limits<float>::infinity(),
-                                       std::vector<int>* surfaces = nullptr);
+                                       std::vector<int>* surfaces = nullptr, std::vector<bool>* ties = nullptr);
 
 struct OracleReport {
   std::size_t receiverPixels = 0;  // Lit or Shadowed by the oracle
@@ -64,14 +75,21 @@ struct OracleReport {
 // surfaces classifyPixels found, another surface: a silhouette, where the rasterizer's coverage
 // and the ray through the pixel centre may see different things, or a caster's terminator, where
 // the sides of its own volume leave its surface at the faces' grazing angle and lie within
-// rounding of it over the pixels beside the line.
+// rounding of it over the pixels beside the line. Given the ties classifyPixels found, a pixel
+// where a side and the surface tie within a rasterizer's snapping is on an edge too.
 OracleReport compareWithOracle(const std::vector<PixelClass>& oracle, const std::vector<bool>& litInImage,
-                               glm::ivec2 size, const std::vector<int>* surfaces = nullptr);
+                               glm::ivec2 size, const std::vector<int>* surfaces = nullptr,
+                               const std::vector<bool>* ties = nullptr);
+
+// compareWithOracle's edges: per pixel, top row first, whether a disagreement there is forgiven.
+std::vector<bool> oracleEdges(const std::vector<PixelClass>& oracle, glm::ivec2 size,
+                              const std::vector<int>* surfaces = nullptr, const std::vector<bool>* ties = nullptr);
 
 // A picture of the comparison, RGBA top row first: the oracle's classes in greys and blue,
 // forgiven disagreements yellow, the others red.
 std::vector<std::uint8_t> oraclePicture(const std::vector<PixelClass>& oracle,
                                         const std::vector<bool>& litInImage, glm::ivec2 size,
-                                        const std::vector<int>* surfaces = nullptr);
+                                        const std::vector<int>* surfaces = nullptr,
+                                        const std::vector<bool>* ties = nullptr);
 
 }  // namespace stencil

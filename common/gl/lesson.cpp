@@ -334,20 +334,29 @@ bool checkShadows(Session& s, const Image& stencil) {
   const ShadowCheck& check = *s.shadowCheck;
   const glm::ivec2 size{stencil.width, stencil.height};
   std::vector<int> surfaces;
+  std::vector<bool> ties;
   const std::vector<PixelClass> oracle =
-      classifyPixels(check.objects, check.light, s.viewProjection, size, check.lightRadius, &surfaces);
+      classifyPixels(check.objects, check.light, s.viewProjection, size, check.lightRadius, &surfaces, &ties);
   std::vector<bool> lit(stencil.pixels.size());
   for (std::size_t i = 0; i < lit.size(); ++i) {
     const bool receiver = oracle[i] == PixelClass::Lit || oracle[i] == PixelClass::Shadowed;
     lit[i] = check.judgeReceiversOnly && !receiver ? false : check.litInStencil(stencil.pixels[i]);
   }
-  const OracleReport r = compareWithOracle(oracle, lit, size, &surfaces);
+  const OracleReport r = compareWithOracle(oracle, lit, size, &surfaces, &ties);
   Image picture(size.x, size.y, 4);
-  picture.pixels = oraclePicture(oracle, lit, size, &surfaces);
+  picture.pixels = oraclePicture(oracle, lit, size, &surfaces, &ties);
   s.outputs.addPng(*s.commandLine.oracle, picture);
   Image classes(size.x, size.y, 1);  // the oracle's classes as raw bytes (PixelClass), for tools
   for (std::size_t i = 0; i < oracle.size(); ++i) classes.pixels[i] = static_cast<std::uint8_t>(oracle[i]);
   s.outputs.addPng(rawPathBeside(*s.commandLine.oracle), classes);
+  // Its edges, 255 where a disagreement is forgiven, for tools that judge another picture of the
+  // same frame (tests/web/web_check.py: the browser's).
+  Image edges(size.x, size.y, 1);
+  const std::vector<bool> onEdges = oracleEdges(oracle, size, &surfaces, &ties);
+  for (std::size_t i = 0; i < onEdges.size(); ++i) edges.pixels[i] = onEdges[i] ? 255 : 0;
+  std::filesystem::path edgesPath = *s.commandLine.oracle;
+  edgesPath.replace_extension(".edges.png");
+  s.outputs.addPng(edgesPath, edges);
   std::cerr << (r.passed() ? "oracle ok: " : "oracle FAILED: ") << r.receiverPixels << " receiver pixels, "
             << r.shadowedPixels << " shadowed; " << r.disagreements << " disagree, " << r.onEdges
             << " of them on edges (picture: " << s.commandLine.oracle->string() << ")\n";

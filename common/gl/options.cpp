@@ -367,7 +367,8 @@ std::string helpText(const LessonInfo& info, const std::string& program, bool re
         << "  --oracle FILE.png        check the shadows against a CPU ray cast of the same scene,\n"
         << "                           pixel by pixel; exit 1 if they differ off the edges; the\n"
         << "                           comparison as a picture (red: wrong, yellow: on an edge);\n"
-        << "                           the oracle's classes as raw bytes beside it, FILE.raw.png\n";
+        << "                           the oracle's classes as raw bytes beside it, FILE.raw.png,\n"
+        << "                           and its edges (255: forgiven there), FILE.edges.png\n";
   out << "\n"
       << "Golden tests\n"
       << "  --golden DIR             compare with DIR/VARIANT.png and DIR/VARIANT.stencil.png;\n"

@@ -70,16 +70,17 @@ int compareLight(const Scene& scene, const glm::vec4& light, float radius,
     return 2;
   }
   std::vector<int> surfaces;
+  std::vector<bool> ties;
   const std::vector<PixelClass> oracle =
-      classifyPixels(objects, light, viewProjection, size, radius, &surfaces);
+      classifyPixels(objects, light, viewProjection, size, radius, &surfaces, &ties);
   std::vector<bool> lit(oracle.size());
   for (std::size_t p = 0; p < lit.size(); ++p) {
     const bool receiver = oracle[p] == PixelClass::Lit || oracle[p] == PixelClass::Shadowed;
     lit[p] = receiver && mask.pixels[p] == 255;
   }
-  const OracleReport r = compareWithOracle(oracle, lit, size, &surfaces);
+  const OracleReport r = compareWithOracle(oracle, lit, size, &surfaces, &ties);
   Image picture(size.x, size.y, 4);
-  picture.pixels = oraclePicture(oracle, lit, size, &surfaces);
+  picture.pixels = oraclePicture(oracle, lit, size, &surfaces, &ties);
   const std::filesystem::path pictureFile = maskFile.parent_path() / (name + "-oracle.png");
   writePng(pictureFile, picture);
   std::cout << name << " (" << describe(light) << "): " << (r.passed() ? "ok" : "FAILED") << ", "

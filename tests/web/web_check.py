@@ -7,7 +7,7 @@ with --depth, the page's depth view of the first variant beside --depth-out. One
     tests/web/web_check.py SITE NATIVE_EXE CHROMIUM OUT_DIR [--variant V]... [--size WxH] [--time T]
                            [--without EXT,EXT] [--cracks [parity]] [--leave-out VARIANT NAME=VALUE...]...
                            [--leave-out-stencil VARIANT NAME=VALUE...]... [--depth]
-                           [--scene FILE]... [--set NAME=VALUE]...
+                           [--scene FILE]... [--set NAME=VALUE]... [--oracle]
 
 --variant: only those variants (else every one; with STENCIL_WEB_VARIANTS=first in the environment,
 the first the lesson declares). --cracks forgives lone pixels one count off in a uniform stretch of
@@ -28,7 +28,11 @@ the browser takes the fallback it takes without them; the native lesson is the s
 
 The stencil must be the native one's except on edge pixels, judged as the ray-cast oracle judges
 them (common/geometry/shadow_oracle.cpp, onEdge): a pixel whose 3x3 neighbourhood in the native
-stencil holds another value. The colour likewise: every pixel within COLOUR_CHANNEL of the native
+stencil holds another value. With --oracle (the lessons with a shadow claim), also the edges of the
+oracle itself where the variant makes a claim (native --oracle's FILE.edges.png): among them the
+pixels where a side of a shadow volume and the surface tie within the vertex snapping GL allows a
+rasterizer (1/16 pixel; SwiftShader's WebGL snaps to that, llvmpipe to 1/256), whose count a
+conforming rasterizer may take either way. The colour likewise: every pixel within COLOUR_CHANNEL of the native
 one in each channel (the goldens' per-channel tolerance, common/gl/golden.h) except on an edge of
 the native picture, a pixel with a neighbour more than COLOUR_CHANNEL away from it (SwiftShader and
 llvmpipe cover a triangle's edge pixels each their own way). The depth view (the page loaded with
@@ -67,19 +71,21 @@ def on_edge(differs, w, h, x, y):
     return False
 
 
-def compare_stencil(web, native, w, h, parity=False, sides=None):
-    """Pixels that differ, how many of them lie on an edge of the native stencil, how many of the
+def compare_stencil(web, native, w, h, parity=False, sides=None, oracle_edges=None):
+    """Pixels that differ, how many of them lie on an edge of the native stencil or of the oracle
+    (ORACLE_EDGES: native --oracle's edges, one flag a pixel), how many on the oracle's alone, how many of the
     rest the comparison leaves out (SIDES as compare_colour's, native stencils of the same frame
     drawn with other settings: every pixel when SIDES is empty), and how many of the rest are cracks
     (crack())."""
     differ = [i for i in range(w * h) if web[i] != native[i]]
-    off_edge = [i for i in differ if not on_edge(lambda i, j: native[i] != native[j], w, h, i % w, i // w)]
+    off_native_edge = [i for i in differ if not on_edge(lambda i, j: native[i] != native[j], w, h, i % w, i // w)]
+    off_edge = [i for i in off_native_edge if not (oracle_edges and oracle_edges[i])]
     rest = off_edge
     if sides is not None:
         def in_layer(i, j):  # the layer the settings change shows at j
             return any(native[j] != side[j] for side in sides)
         rest = [i for i in off_edge if sides and not on_edge(in_layer, w, h, i % w, i // w)]
-    return (len(differ), len(differ) - len(off_edge), len(off_edge) - len(rest),
+    return (len(differ), len(differ) - len(off_edge), len(off_native_edge) - len(off_edge), len(off_edge) - len(rest),
             sum(crack(web, native, w, h, i, parity) for i in rest))
 
 
@@ -158,6 +164,24 @@ def run_native(native, args, variant, flags):
     return time.monotonic() - start, None
 
 
+def native_oracle_edges(args, variant, out):
+    """The oracle's edges of the native frame of VARIANT (--oracle's FILE.edges.png: 255 where a
+    disagreement is forgiven), one flag a pixel, and None; None and None where the variant makes no
+    shadow claim; None and what failed. A frame the oracle fails (exit 1: a variant that shows a
+    method's failure) still has its edges."""
+    picture = out / "native-oracle.png"
+    scene = ["--scene", str(SCENES / args.scene_now)] if args.scene_now else []
+    settings = [a for setting in args.set for a in ("--set", setting)]
+    run = subprocess.run([str(args.native), "--headless", "--quiet", "--size", args.size, "--time", args.time,
+                          "--variant", variant, *scene, *settings, "--oracle", str(picture)],
+                         capture_output=True, text=True)
+    if run.returncode == 2 and "makes no shadow claim" in run.stderr:
+        return None, None
+    if run.returncode not in (0, 1):
+        return None, f"the native lesson failed (exit {run.returncode}): {run.stderr.strip()}"
+    return [v == 255 for v in decode_png(picture.with_suffix(".edges.png").read_bytes())[3]], None
+
+
 def check_variant(browser, base, args, lesson, variant, out):
     """One variant's snapshot against the native lesson: (passed, the line that says so)."""
     out.mkdir(parents=True, exist_ok=True)
@@ -208,19 +232,26 @@ def check_variant(browser, base, args, lesson, variant, out):
             sides.append(pixels[3])
         return sides, (f", {{}} left out (where the native frame and {' and '.join(settings)} differ)" if sides
                        else f", {{}} left out (the variant's {picture} is not compared)")
+    oracle_edges = None
+    if args.oracle:
+        oracle_edges, error = native_oracle_edges(args, variant, out)
+        if error:
+            return False, f"web FAILED: {lesson} {variant} --oracle: {error}"
     try:
         sides, fight = drawn_with(args.leave_out, "colour")
         stencil_sides, stencil_fight = drawn_with(args.leave_out_stencil, "stencil")
     except RuntimeError as error:
         return False, str(error)
-    differ, edges, stencil_fought, cracks = compare_stencil(web_stencil, native_stencil, w, h,
-                                                            args.cracks == "parity", stencil_sides)
+    differ, edges, oracle_only, stencil_fought, cracks = compare_stencil(web_stencil, native_stencil, w, h,
+                                                            args.cracks == "parity", stencil_sides, oracle_edges)
     over, colour_edges, fought, lone, worst = compare_colour(web_colour, native_colour, w, h, sides)
+    oracle_note = f" ({oracle_only} of them the oracle's alone)" if oracle_edges else ""
     passed = differ == edges + stencil_fought + (cracks if args.cracks else 0) and over == colour_edges + fought + (
         lone if args.cracks else 0)
     return passed, (f"{'web ok' if passed else 'web FAILED'}: {lesson} {variant}"
                     f"{' without ' + args.without if args.without else ''}: stencil {differ} of {w * h} pixels "
-                    f"differ, {edges} on edges{stencil_fight.format(stencil_fought)}, {cracks} lone cracks"
+                    f"differ, {edges} on edges{oracle_note}"
+                    f"{stencil_fight.format(stencil_fought)}, {cracks} lone cracks"
                     f"{' (forgiven)' if args.cracks else ''}; "
                     f"colour {over} over {COLOUR_CHANNEL}/255, {colour_edges} on edges{fight.format(fought)}, {lone} lone"
                     f"{' (forgiven)' if args.cracks else ''}, max diff {worst}; "
@@ -271,6 +302,7 @@ def main():
     parser.add_argument("--scene", action="append", default=[])
     parser.add_argument("--set", action="append", default=[])
     parser.add_argument("--timeout", type=float, default=120)
+    parser.add_argument("--oracle", action="store_true")
     args = parser.parse_args()
     lesson = args.native.name
     for scene in args.scene:
