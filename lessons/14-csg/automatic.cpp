@@ -131,10 +131,15 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
     for (int& i : batch) i = shown[static_cast<std::size_t>(i)];
   f.count("batches", nb);
 
+  // Each wait for a cycle's result (a query, or the depth read back) drains llvmpipe's threads: the
+  // rasterizers then idle while the next draws are set up. A wait can spare at most the next
+  // cycle's other nb - 1 batches, so with few batches the cycles run to their bound unwatched
+  // (at 640x480 the pipe draws 15% faster so, the 3D grid, 12 batches, 5 times slower).
+  const bool waits = cycles > 1 && nb > 4;
   // Without queries whose result the frame can wait for (the browser's come after it) every batch
   // is merged, and the depth read back after each cycle says when one changed nothing: a cycle is a
   // function of the depth it starts from, so the next would change nothing either.
-  std::vector<GLuint> queries(cycles > 1 && f.features.samplesPassed ? nb : 0, 0);
+  std::vector<GLuint> queries(waits && f.features.samplesPassed ? nb : 0, 0);
   std::vector<float> depthBefore;
   std::vector<bool> moved(nb, true), onSurface(nb, queries.empty());
   std::vector<bool> shownThere;  // with queries, the primitives the work buffer names (primitivesIn)
@@ -172,6 +177,7 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
       }
       if (queries.empty()) {
         if (cycle + 1 == cycles) break;
+        if (!waits) continue;
         std::vector<float> depth(static_cast<std::size_t>(within.width) * static_cast<std::size_t>(within.height));
         glReadPixels(within.x, within.y, within.width, within.height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
         if (depth == depthBefore) break;
