@@ -146,7 +146,6 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
   f.ownOcclusionQueries([&] {
     if (!queries.empty()) glGenQueries(static_cast<GLsizei>(nb), queries.data());
     glStencilMask(0xFF);
-    if (p.intersected.size() > 1) glClear(GL_STENCIL_BUFFER_BIT);  // scsEnter's clip left its counts
     std::size_t last = nb;  // the batch drawn last
     for (std::size_t cycle = 0; cycle < cycles; ++cycle) {
       f.count("cycles");

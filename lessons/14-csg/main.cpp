@@ -396,10 +396,11 @@ void Csg::scs(Frame& f, const SumOfProducts& sop) {
 }
 
 // SCS's step 1, in the work buffer: the intersected primitives' front faces, the furthest kept,
-// clipped to where the ray is inside them all. One convex primitive's front face lies inside it,
-// and the clip after the subtractions sends what it does not cover to the far plane: with
-// `automatic` (its economies) a single one is not clipped here, and the work buffer gets the
-// primitive alone (here and in scsSubtract).
+// clipped to where the ray is inside them all. With `automatic` (its economies) this clip is left
+// to the one after the subtractions, and the work buffer gets the primitive alone (here and in
+// scsSubtract): a surface outside the convex primitives' common interval stays outside it as the
+// subtractions move it back (into no primitive's back face it had passed), and that clip sends it
+// to the far plane as this one would have (a surface at the far plane no subtraction moves).
 void Csg::scsEnter(Frame& f, const CsgProduct& p, bool automatic) {
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   // The work buffer's colour follows the surface as it moves (no part of the method: the
@@ -423,7 +424,7 @@ void Csg::scsEnter(Frame& f, const CsgProduct& p, bool automatic) {
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glCullFace(GL_BACK);
   for (int a : p.intersected) automatic ? drawPrimitive(a) : drawSelected(a);
-  if (!automatic || p.intersected.size() > 1) clipByIntersection(f, p);
+  if (!automatic) clipByIntersection(f, p);
   f.pass("intersect");
 }
 
