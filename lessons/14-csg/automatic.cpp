@@ -200,7 +200,9 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
     }
   });
   f.pass("subtract");
-  clipByIntersection(f, p);
+  // Each subtraction left the stencil 0 within the product's rectangle (its back faces cleared their
+  // marks, or the clear after it did), as scsEnter's clear did: the clip needs no clear of its own.
+  clipByIntersection(f, p, true);
   f.pass("intersect");
   std::vector<bool> merged(models_.size(), false);  // in the product's order, as main.cpp merges
   for (std::size_t b = 0; b < nb; ++b)

@@ -466,10 +466,10 @@ void Csg::scsSubtract(Frame& f, const std::vector<int>& batch, bool automatic, G
 // Counts the intersected primitives whose back face lies behind the surface (or on it) and sends
 // every pixel where that is not all of them to the far plane: the surface lies outside one, or a
 // primitive does not cover the pixel at all (no back face to count; checking for a back face in
-// front would miss that one).
-void Csg::clipByIntersection(Frame& f, const CsgProduct& p) {
+// front would miss that one). `cleared`: the stencil is 0 already.
+void Csg::clipByIntersection(Frame& f, const CsgProduct& p, bool cleared) {
   glStencilMask(0xFF);
-  glClear(GL_STENCIL_BUFFER_BIT);
+  if (!cleared) glClear(GL_STENCIL_BUFFER_BIT);
   glDepthFunc(furtherOrEqual());  // the back face behind the surface: the surface is before it leaves
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthMask(GL_FALSE);
