@@ -396,11 +396,11 @@ void Csg::scs(Frame& f, const SumOfProducts& sop) {
 }
 
 // SCS's step 1, in the work buffer: the intersected primitives' front faces, the furthest kept,
-// clipped to where the ray is inside them all. With `automatic` (its economies) this clip is left
-// to the one after the subtractions, and the work buffer gets the primitive alone (here and in
-// scsSubtract): a surface outside the convex primitives' common interval stays outside it as the
-// subtractions move it back (into no primitive's back face it had passed), and that clip sends it
-// to the far plane as this one would have (a surface at the far plane no subtraction moves).
+// clipped to where the ray is inside them all. With `automatic` (its economies) the work buffer
+// gets the primitive alone (here and in scsSubtract), and this clip is left to the one after the
+// subtractions: a surface behind an intersected primitive's back face, or where one has none,
+// stays so as the subtractions move it back, and that clip sends it to the far plane as this one
+// would have (and there no subtraction would have moved it).
 void Csg::scsEnter(Frame& f, const CsgProduct& p, bool automatic) {
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   // The work buffer's colour follows the surface as it moves (no part of the method: the
