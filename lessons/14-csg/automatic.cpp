@@ -132,10 +132,11 @@ void Csg::scsUntilUnchanged(Frame& f, const CsgProduct& p, const ScissorRect& wi
   f.count("batches", nb);
 
   // Each wait for a cycle's result (a query, or the depth read back) drains llvmpipe's threads: the
-  // rasterizers then idle while the next draws are set up. A wait can spare at most the next
-  // cycle's other nb - 1 batches, so with few batches the cycles run to their bound unwatched
-  // (at 640x480 the pipe draws 15% faster so, the 3D grid, 12 batches, 5 times slower).
-  const bool waits = cycles > 1 && nb > 4;
+  // rasterizers then idle while the next draws are set up. The waits can spare only the batches of
+  // the cycles after the first, so where the bound holds few (cycles x batches at most 16: the
+  // pipe's 9, 9 and 16) the cycles run to it unwatched; at 640x480 the pipe draws 15% faster so,
+  // the 3D grid (27 x 12) 5 times slower.
+  const bool waits = cycles > 1 && cycles * nb > 16;
   // Without queries whose result the frame can wait for (the browser's come after it) every batch
   // is merged, and the depth read back after each cycle says when one changed nothing: a cycle is a
   // function of the depth it starts from, so the next would change nothing either.
