@@ -78,7 +78,7 @@ class Csg final : public Lesson {
                    bool clean = false);
   BoundingSphere worldSphereOf(int i) const;
   bool reachesPastFar(const Frame& f, int i) const;
-  void clipByIntersection(Frame& f, const CsgProduct& p);
+  void clipByIntersection(Frame& f, const CsgProduct& p, bool cleared = false);
 
   // ---- automatic.cpp: per product the method that is right for it, with OpenCSG's economies ------
   void automatic(Frame& f, const SumOfProducts& sop);

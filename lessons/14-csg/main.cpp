@@ -396,10 +396,11 @@ void Csg::scs(Frame& f, const SumOfProducts& sop) {
 }
 
 // SCS's step 1, in the work buffer: the intersected primitives' front faces, the furthest kept,
-// clipped to where the ray is inside them all. One convex primitive's front face lies inside it,
-// and the clip after the subtractions sends what it does not cover to the far plane: with
-// `automatic` (its economies) a single one is not clipped here, and the work buffer gets the
-// primitive alone (here and in scsSubtract).
+// clipped to where the ray is inside them all. With `automatic` (its economies) the work buffer
+// gets the primitive alone (here and in scsSubtract), and this clip is left to the one after the
+// subtractions: a surface behind an intersected primitive's back face, or where one has none,
+// stays so as the subtractions move it back, and that clip sends it to the far plane as this one
+// would have (and there no subtraction would have moved it).
 void Csg::scsEnter(Frame& f, const CsgProduct& p, bool automatic) {
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
   // The work buffer's colour follows the surface as it moves (no part of the method: the
@@ -423,7 +424,7 @@ void Csg::scsEnter(Frame& f, const CsgProduct& p, bool automatic) {
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   glCullFace(GL_BACK);
   for (int a : p.intersected) automatic ? drawPrimitive(a) : drawSelected(a);
-  if (!automatic || p.intersected.size() > 1) clipByIntersection(f, p);
+  if (!automatic) clipByIntersection(f, p);
   f.pass("intersect");
 }
 
@@ -465,10 +466,10 @@ void Csg::scsSubtract(Frame& f, const std::vector<int>& batch, bool automatic, G
 // Counts the intersected primitives whose back face lies behind the surface (or on it) and sends
 // every pixel where that is not all of them to the far plane: the surface lies outside one, or a
 // primitive does not cover the pixel at all (no back face to count; checking for a back face in
-// front would miss that one).
-void Csg::clipByIntersection(Frame& f, const CsgProduct& p) {
+// front would miss that one). `cleared`: the stencil is 0 already.
+void Csg::clipByIntersection(Frame& f, const CsgProduct& p, bool cleared) {
   glStencilMask(0xFF);
-  glClear(GL_STENCIL_BUFFER_BIT);
+  if (!cleared) glClear(GL_STENCIL_BUFFER_BIT);
   glDepthFunc(furtherOrEqual());  // the back face behind the surface: the surface is before it leaves
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glDepthMask(GL_FALSE);
