@@ -64,6 +64,7 @@ void Csg::render(Frame& f) {
   const int method = f.option("method");
   const CsgScene scene = sceneFor(f, fromFile_);
   const CsgTree tree = prepare(scene, f.time);
+  refuseCuts(f, scene, tree);  // the near plane cutting the result (no method draws its cap)
   beginFrame(f, method == kTwoSolids);  // the depth mapping (reversed float depth where it can be)
 
   if (method == kTwoSolids)
