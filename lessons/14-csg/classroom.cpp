@@ -330,7 +330,7 @@ LessonInfo lessonInfo() {
        kTwoSolids, 4},
       {"op", 'O', "two solids: 0 A + B, 1 A * B, 2 A - B, 3 B - A", kAMinusB, 3},
       {"scene", 'N',
-       "the scene of methods 1 to 3: 0 the two solids (by op), 1 cube * sphere - three cylinders,\n"
+       "the scene of methods 1 to 4: 0 the two solids (by op), 1 cube * sphere - three cylinders,\n"
        "      2 A - (B - C), 3 a torus (convexity 2) minus a box, 4 a box minus a grid of spheres,\n"
        "      5 a pocket whose top lies in A's top face (coincident faces), 6 the same, B 0.01 taller,\n"
        "      7 the cube rack: a box minus 343 boxes, 8 a box minus a 3x3x3 grid of spheres,\n"
@@ -342,7 +342,7 @@ LessonInfo lessonInfo() {
        "      of its target faces a pixel's ray crosses (counted); 1-8 a bound given",
        0, 8, 0},
       {"queries", 'Q', "Goldfeather: stop at the first layer an occlusion query finds empty", 0},
-      {"stencil", 'T', "trim by the stencil (off: every candidate surface kept, the result wrong)", 1},
+      {"stencil", 'T', "methods 0 to 2: trim by the stencil (off: every candidate surface kept, the result wrong)", 1},
       {"oracle", 'K',
        "check the depth and the primitive each pixel shows against a CPU CSG ray cast\n"
        "      (--stats reports oracle_*; headless, exit 1 where a pixel off the edges differs)",
@@ -420,12 +420,20 @@ LessonInfo lessonInfo() {
   // A scene file is drawn by the automatic method unless a method is chosen; the options that pick
   // the lesson's own scenes, and the demo's two solids, have nothing to draw it with.
   info.sceneSettings = {{"method", kAutomatic}};
-  info.refuseOptions = [](const OptionsChosen& o) -> std::string {
+  info.refuseOptions = [defaults = info.options](const OptionsChosen& o) -> std::string {
+    const auto byDefault = [&](const char* name) {
+      return std::any_of(defaults.begin(), defaults.end(),
+                         [&](const Option& d) { return d.name == name && d.value == o.value(name); });
+    };
+    // Only Goldfeather's passes (and the demo's) have a trim to leave out.
+    if (!byDefault("stencil") && (o.value("method") == kScs || o.value("method") == kAutomatic))
+      return std::string(o.set("stencil") ? "--set stencil=0" : "--variant: it sets stencil=0, and") +
+             (o.set("stencil") ? ":" : "") + " methods 3 and 4 have no untrimmed picture to show; it needs --set method=0, 1 or 2";
     if (!o.scene) return scsRefusal(o);
     for (const char* own : {"scene", "op", "grid"})
-      if (o.set(own))
-        return std::string("--set ") + own + ": it picks among the lesson's own scenes; --scene " +
-               o.scene->file.string() + " is the scene";
+      if (o.set(own) || !byDefault(own))
+        return (o.set(own) ? std::string("--set ") + own + ": it picks" : std::string("--variant: it sets ") + own + ", which picks") +
+               " among the lesson's own scenes; --scene " + o.scene->file.string() + " is the scene";
     if (o.value("method") == kTwoSolids)
       return "--scene: method 0 draws the demo's two solids; the scene's csg expression needs "
              "--set method=1, 2, 3 or 4";
