@@ -210,13 +210,15 @@ bool nearRectangleMeets(const Mesh& mesh, const glm::dmat4& model, const glm::dm
 //     near plane cuts is drawn right (its faces counted behind the surface: z-fail).
 //   - the far plane cutting a primitive without depth clamping (frontFace), as in a browser
 //     without EXT_depth_clamp: the faces past it would be lost to the counts.
-void Csg::refuseCuts(const Frame& f, const CsgScene& scene, const CsgTree& tree) const {
+void Csg::refuseCuts(const Frame& f, const CsgScene& scene, const SumOfProducts& sop) const {
   const glm::dmat4 viewProjection(f.projection * f.view);
-  for (const CsgProduct& p : normalize(tree).products) {
+  std::vector<int> meets(scene.primitives.size(), -1);  // per primitive: not yet decided, 0 or 1
+  for (const CsgProduct& p : sop.products) {
     bool all = !p.intersected.empty();
     for (int a : p.intersected) {
       const auto i = static_cast<std::size_t>(a);
-      all = all && nearRectangleMeets(scene.primitives[i].mesh, glm::dmat4(models_[i]), viewProjection);
+      if (meets[i] < 0) meets[i] = nearRectangleMeets(scene.primitives[i].mesh, glm::dmat4(models_[i]), viewProjection);
+      all = all && meets[i] == 1;
       if (!all) break;
     }
     if (all)

@@ -127,7 +127,7 @@ class Csg final : public Lesson {
   void farQuad() { drawQuad(kBackground, static_cast<float>(depth_.farthest)); }
 
   // ---- classroom.cpp: what no method draws, refused; the --stats counts a method starts from -----
-  void refuseCuts(const Frame& f, const CsgScene& scene, const CsgTree& tree) const;
+  void refuseCuts(const Frame& f, const CsgScene& scene, const SumOfProducts& sop) const;
   static void startCounts(Frame& f, const SumOfProducts& sop, std::initializer_list<const char*> zeros,
                           bool beforePruning = false);
 
