@@ -135,6 +135,12 @@ std::size_t CsgTree::primitiveCount() const {
       std::count_if(nodes.begin(), nodes.end(), [](const Node& n) { return n.kind == Kind::Primitive; }));
 }
 
+bool isCsgName(std::string_view name) {
+  const auto letter = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; };
+  return !name.empty() && letter(name.front()) &&
+         std::all_of(name.begin(), name.end(), [&](char c) { return letter(c) || (c >= '0' && c <= '9'); });
+}
+
 CsgTree parseCsg(std::string_view text, const std::vector<std::string>& names) {
   return Parser(text, names).parse();
 }

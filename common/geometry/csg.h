@@ -40,6 +40,10 @@ inline constexpr std::size_t kMaxCsgProducts = 100000;  // normalize's default b
 // kMaxCsgDepth.
 CsgTree parseCsg(std::string_view text, const std::vector<std::string>& names);
 
+// Whether parseCsg can name a primitive called `name`: [A-Za-z_][A-Za-z0-9_]*. Any other name would
+// be read as several ("drill-x" as drill - x) or not at all.
+bool isCsgName(std::string_view name);
+
 // The tree written back in the text form, fully parenthesised, with the given names.
 std::string csgText(const CsgTree&, const std::vector<std::string>& names);
 

@@ -850,7 +850,15 @@ namespace {
 void checkCsg(Scene& scene, const std::string& file, std::size_t column) {
   const std::string where = file + ":" + std::to_string(scene.csgLine) + ": ";
   std::vector<std::string> names;
-  for (const SceneObject& o : scene.objects) names.push_back(o.name);
+  for (const SceneObject& o : scene.objects) {
+    // Any printable word names an object, but the csg line reads only letters, digits and '_'
+    // ("drill-x" would read as drill - x): with a csg line, every name must be one it can write.
+    if (!isCsgName(o.name))
+      throw SceneError(file + ":" + std::to_string(o.line) + ": object '" + o.name +
+                       "': a scene with a csg line names objects by letters, digits and '_' only, not "
+                       "starting with a digit (the csg line could not name it); rename it");
+    names.push_back(o.name);
+  }
   CsgTree tree;
   try {
     tree = parseCsg(scene.csg, names);

@@ -136,10 +136,17 @@ CommandLine parseCommandLine(const LessonInfo& info, int argc, char** argv) {
       const auto eq = s.find('=');
       if (eq == std::string::npos) throw UsageError("--set expects NAME=VALUE, got '" + s + "'");
       const std::string name = s.substr(0, eq);
-      if (std::none_of(info.options.begin(), info.options.end(),
-                       [&](const Option& o) { return o.name == name; }))
-        throw UsageError("unknown option '" + name + "'; --help lists the options");
-      cl.settings.emplace_back(name, parseNumber<int>("--set " + name, s.substr(eq + 1)));
+      const auto option = std::find_if(info.options.begin(), info.options.end(),
+                                       [&](const Option& o) { return o.name == name; });
+      if (option == info.options.end()) throw UsageError("unknown option '" + name + "'; --help lists the options");
+      // An integer past int's range is past the option's too: say the option's (the scene light's
+      // range grows with a scene file, up to int's).
+      const std::string text = s.substr(eq + 1);
+      int parsed = 0;
+      const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), parsed);
+      if (ec == std::errc::result_out_of_range && ptr == text.data() + text.size() && name != info.sceneLightOption)
+        throw UsageError("option '" + name + "' takes " + optionRange(*option) + ", got " + text);
+      cl.settings.emplace_back(name, parseNumber<int>("--set " + name, text));
     } else if (flag == "--out")
       cl.out = value();
     else if (flag == "--stencil-out")

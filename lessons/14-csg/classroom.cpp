@@ -1,7 +1,9 @@
 // Lesson 14 around its algorithms: the lesson's own scenes (the demo's two solids, the rounded
 // cube, grids and a rack after OpenCSG's...), a scene file's csg line, the cameras, options and variants.
+#include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>
+#include <vector>
 #ifdef __GLIBC__  // (defined by the headers above)
 #endif
 
@@ -139,6 +141,99 @@ CsgScene fileScene(const Scene& file, double time) {
 
 }  // namespace
 
+namespace {
+
+// Whether the window segment p-q (normalized device x, y) meets the square [-1, 1]^2 (Liang and
+// Barsky's clip).
+bool segmentMeetsSquare(glm::dvec2 p, glm::dvec2 q) {
+  const glm::dvec2 d = q - p;
+  double t0 = 0.0, t1 = 1.0;
+  const double edges[4][2] = {{-d.x, p.x + 1.0}, {d.x, 1.0 - p.x}, {-d.y, p.y + 1.0}, {d.y, 1.0 - p.y}};
+  for (const auto& [along, room] : edges) {
+    if (along == 0.0) {
+      if (room < 0.0) return false;
+    } else if (along < 0.0) {
+      t0 = std::max(t0, room / along);
+    } else {
+      t1 = std::min(t1, room / along);
+    }
+  }
+  return t0 <= t1;
+}
+
+// Whether the near plane's rectangle (the part of the near plane the frame sees) meets the solid
+// that the closed mesh at `toClip` (world to GL's clip space, the model included) bounds: one of
+// its triangles crosses the rectangle, or, crossing none, the rectangle lies inside it (its centre
+// does: a ray from there crosses the surface an odd number of times).
+bool nearRectangleMeets(const Mesh& mesh, const glm::dmat4& model, const glm::dmat4& viewProjection) {
+  const glm::dmat4 toClip = viewProjection * model;
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    glm::dvec4 c[3];
+    for (int k = 0; k < 3; ++k) c[k] = toClip * glm::dvec4(glm::dvec3(mesh.positions[mesh.indices[t + k]]), 1.0);
+    std::vector<glm::dvec2> on;  // where the triangle's edges meet the near plane z = -w
+    for (int k = 0; k < 3; ++k) {
+      const glm::dvec4 &a = c[k], &b = c[(k + 1) % 3];
+      const double da = a.z + a.w, db = b.z + b.w;
+      glm::dvec4 p = a;
+      if (da != 0.0 && (da < 0.0) == (db < 0.0)) continue;
+      if (da != 0.0) p = a + (b - a) * (da / (da - db));
+      if (p.w > 0.0) on.emplace_back(p.x / p.w, p.y / p.w);
+    }
+    for (std::size_t i = 0; i < on.size(); ++i)
+      for (std::size_t j = i; j < on.size(); ++j)
+        if (segmentMeetsSquare(on[i], on[j])) return true;
+  }
+  const glm::dmat4 fromClip = glm::inverse(viewProjection);
+  const glm::dvec4 centre = fromClip * glm::dvec4(0.0, 0.0, -1.0, 1.0);
+  const glm::dvec3 o = glm::dvec3(centre) / centre.w, dir = glm::normalize(glm::dvec3(0.3123, 0.5377, 0.7836));
+  int crossings = 0;  // Moller and Trumbore's ray-triangle test
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    glm::dvec3 v[3];
+    for (int k = 0; k < 3; ++k) v[k] = glm::dvec3(model * glm::dvec4(glm::dvec3(mesh.positions[mesh.indices[t + k]]), 1.0));
+    const glm::dvec3 e1 = v[1] - v[0], e2 = v[2] - v[0], h = glm::cross(dir, e2);
+    const double det = glm::dot(e1, h);
+    if (det == 0.0) continue;
+    const glm::dvec3 s = o - v[0], q = glm::cross(s, e1);
+    const double u = glm::dot(s, h) / det, w = glm::dot(dir, q) / det;
+    if (u >= 0.0 && w >= 0.0 && u + w <= 1.0 && glm::dot(e2, q) / det > 0.0) ++crossings;
+  }
+  return crossings % 2 == 1;
+}
+
+}  // namespace
+
+// What no method can draw, refused (UsageError) rather than drawn wrong:
+//   - the near plane cutting the result: where the near plane's point lies inside the result the
+//     ray cast sees a cap there, and no method draws one. It can lie inside a product only where it
+//     lies inside each of the product's intersected primitives: refused where the near plane's
+//     rectangle meets all of them (one cut by it, or holding it all). A subtracted primitive the
+//     near plane cuts is drawn right (its faces counted behind the surface: z-fail).
+//   - the far plane cutting a primitive without depth clamping (frontFace), as in a browser
+//     without EXT_depth_clamp: the faces past it would be lost to the counts.
+void Csg::refuseCuts(const Frame& f, const CsgScene& scene, const SumOfProducts& sop) const {
+  const glm::dmat4 viewProjection(f.projection * f.view);
+  std::vector<int> meets(scene.primitives.size(), -1);  // per primitive: not yet decided, 0 or 1
+  for (const CsgProduct& p : sop.products) {
+    bool all = !p.intersected.empty();
+    for (int a : p.intersected) {
+      const auto i = static_cast<std::size_t>(a);
+      if (meets[i] < 0) meets[i] = nearRectangleMeets(scene.primitives[i].mesh, glm::dmat4(models_[i]), viewProjection);
+      all = all && meets[i] == 1;
+      if (!all) break;
+    }
+    if (all)
+      throw UsageError("the near plane cuts '" + scene.primitives[static_cast<std::size_t>(p.intersected.front())].name +
+                       "', an intersected primitive: the result may begin at the near plane, and no method "
+                       "draws the cap the cut leaves there; move the eye back or make near smaller");
+  }
+  if (!hasFeature(f.features, Feature::DepthClamp))
+    for (std::size_t i = 0; i < scene.primitives.size(); ++i)
+      if (reachesPastFar(f, static_cast<int>(i)))
+        throw UsageError("the far plane may cut '" + scene.primitives[i].name +
+                         "', and without depth clamping (EXT_depth_clamp) its faces past it are lost to the "
+                         "counts; make far larger");
+}
+
 void Csg::startCounts(Frame& f, const SumOfProducts& sop, std::initializer_list<const char*> zeros,
                       bool beforePruning) {
   f.count("products", sop.products.size());
@@ -237,7 +332,7 @@ LessonInfo lessonInfo() {
        kTwoSolids, 4},
       {"op", 'O', "two solids: 0 A + B, 1 A * B, 2 A - B, 3 B - A", kAMinusB, 3},
       {"scene", 'N',
-       "the scene of methods 1 to 3: 0 the two solids (by op), 1 cube * sphere - three cylinders,\n"
+       "the scene of methods 1 to 4: 0 the two solids (by op), 1 cube * sphere - three cylinders,\n"
        "      2 A - (B - C), 3 a torus (convexity 2) minus a box, 4 a box minus a grid of spheres,\n"
        "      5 a pocket whose top lies in A's top face (coincident faces), 6 the same, B 0.01 taller,\n"
        "      7 the cube rack: a box minus 343 boxes, 8 a box minus a 3x3x3 grid of spheres,\n"
@@ -249,7 +344,7 @@ LessonInfo lessonInfo() {
        "      of its target faces a pixel's ray crosses (counted); 1-8 a bound given",
        0, 8, 0},
       {"queries", 'Q', "Goldfeather: stop at the first layer an occlusion query finds empty", 0},
-      {"stencil", 'T', "trim by the stencil (off: every candidate surface kept, the result wrong)", 1},
+      {"stencil", 'T', "methods 0 to 2: trim by the stencil (off: every candidate surface kept, the result wrong)", 1},
       {"oracle", 'K',
        "check the depth and the primitive each pixel shows against a CPU CSG ray cast\n"
        "      (--stats reports oracle_*; headless, exit 1 where a pixel off the edges differs)",
@@ -327,12 +422,20 @@ LessonInfo lessonInfo() {
   // A scene file is drawn by the automatic method unless a method is chosen; the options that pick
   // the lesson's own scenes, and the demo's two solids, have nothing to draw it with.
   info.sceneSettings = {{"method", kAutomatic}};
-  info.refuseOptions = [](const OptionsChosen& o) -> std::string {
+  info.refuseOptions = [defaults = info.options](const OptionsChosen& o) -> std::string {
+    const auto byDefault = [&](const char* name) {
+      return std::any_of(defaults.begin(), defaults.end(),
+                         [&](const Option& d) { return d.name == name && d.value == o.value(name); });
+    };
+    // Only Goldfeather's passes (and the demo's) have a trim to leave out.
+    if (!byDefault("stencil") && (o.value("method") == kScs || o.value("method") == kAutomatic))
+      return std::string(o.set("stencil") ? "--set stencil=0" : "--variant: it sets stencil=0, and") +
+             (o.set("stencil") ? ":" : "") + " methods 3 and 4 have no untrimmed picture to show; it needs --set method=0, 1 or 2";
     if (!o.scene) return scsRefusal(o);
     for (const char* own : {"scene", "op", "grid"})
-      if (o.set(own))
-        return std::string("--set ") + own + ": it picks among the lesson's own scenes; --scene " +
-               o.scene->file.string() + " is the scene";
+      if (o.set(own) || !byDefault(own))
+        return (o.set(own) ? std::string("--set ") + own + ": it picks" : std::string("--variant: it sets ") + own + ", which picks") +
+               " among the lesson's own scenes; --scene " + o.scene->file.string() + " is the scene";
     if (o.value("method") == kTwoSolids)
       return "--scene: method 0 draws the demo's two solids; the scene's csg expression needs "
              "--set method=1, 2, 3 or 4";

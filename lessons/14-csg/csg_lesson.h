@@ -126,7 +126,8 @@ class Csg final : public Lesson {
   // Back to the far plane, the background's colour where colour is written.
   void farQuad() { drawQuad(kBackground, static_cast<float>(depth_.farthest)); }
 
-  // ---- classroom.cpp: the --stats counts a method starts from (0, so every frame has them all) -----
+  // ---- classroom.cpp: what no method draws, refused; the --stats counts a method starts from -----
+  void refuseCuts(const Frame& f, const CsgScene& scene, const SumOfProducts& sop) const;
   static void startCounts(Frame& f, const SumOfProducts& sop, std::initializer_list<const char*> zeros,
                           bool beforePruning = false);
 
@@ -153,6 +154,8 @@ class Csg final : public Lesson {
   glm::ivec2 workSize_{0};
   bool frameToClear_ = false;  // the frame not yet cleared this frame (clearFrame)
   bool mirroredView_ = false;  // this frame's view matrix has a negative determinant
+  std::vector<bool> pastFar_;  // per primitive, whether the far plane may cut it: drawn depth clamped
+  bool depthClamped_ = false;  // GL_DEPTH_CLAMP now
   DepthMapping depth_;         // this frame's: its depth tests, clear depth and projection
   // The depth tests that pass behind the buffer's depth (GL_GREATER, GL_GEQUAL; GL_LESS and
   // GL_LEQUAL in reversed depth, where nearer is greater) and the nearest depth there is.

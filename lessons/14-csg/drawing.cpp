@@ -203,9 +203,22 @@ void Csg::mergeInputs() {
 // A mirroring model (a negative determinant: scale -1 1 1, OpenSCAD's mirror()) or a mirrored view
 // turns primitive i's triangles round on screen: its front faces then wind clockwise there. Both
 // together cancel. Every cull and every front/back stencil operation follows this.
+//
+// Every draw of a primitive the far plane may cut (pastFar_) is depth clamped: its fragments past
+// the far plane lie at the far plane's depth instead of being clipped away. A count of the faces
+// behind a surface (Goldfeather's parity, SCS's back faces) then misses none of them, and a surface
+// there, at the clear depth, is never merged (nearer is strict): the ray cast does not see past the
+// far plane either. All its draws, so that the same triangle lands on the same depth in every pass
+// (a clamped triangle is not clipped, and its depths round otherwise); only its draws, so that no
+// other scene's pixels change. Its fragments before the near plane lie at the near plane's depth,
+// in front of every surface: that is the near plane cutting a primitive, which render refuses
+// where the result would need a cap there (refuseNearCap).
 void Csg::frontFace(int i) {
   const bool mirrored = (glm::determinant(glm::mat3(models_[static_cast<std::size_t>(i)])) < 0.0f) != mirroredView_;
   glFrontFace(mirrored ? GL_CW : GL_CCW);
+  const bool clamp = pastFar_[static_cast<std::size_t>(i)];
+  if (clamp != depthClamped_) clamp ? glEnable(GL_DEPTH_CLAMP) : glDisable(GL_DEPTH_CLAMP);
+  depthClamped_ = clamp;
 }
 
 // The frame's state before a method draws. The depth mapping comes first, before anything is
@@ -216,6 +229,9 @@ void Csg::frontFace(int i) {
 // the others clear it at their first merge (clearFrame).
 void Csg::beginFrame(const Frame& f, bool clearNow) {
   mirroredView_ = glm::determinant(glm::mat3(f.view)) < 0.0f;  // a mirrored camera
+  pastFar_.assign(models_.size(), false);  // the primitives the far plane may cut (frontFace)
+  for (std::size_t i = 0; i < models_.size(); ++i) pastFar_[i] = reachesPastFar(f, static_cast<int>(i));
+  depthClamped_ = false;
   depth_ = depthMappingOf(f);
   if (f.reversedDepth) glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // window depth = clip z / w
   glClearColor(kBackground.r, kBackground.g, kBackground.b, kBackground.a);
@@ -238,6 +254,8 @@ void Csg::endFrame(const Frame& f) {
     clearFrame();
   }
   glDisable(GL_CULL_FACE);
+  if (depthClamped_) glDisable(GL_DEPTH_CLAMP);
+  depthClamped_ = false;
   glFrontFace(GL_CCW);
   glCullFace(GL_BACK);
   glDisable(GL_STENCIL_TEST);

@@ -64,16 +64,18 @@ void Csg::render(Frame& f) {
   const int method = f.option("method");
   const CsgScene scene = sceneFor(f, fromFile_);
   const CsgTree tree = prepare(scene, f.time);
+  const SumOfProducts sop = normalize(tree);
+  refuseCuts(f, scene, sop);  // the near plane cutting the result (no method draws its cap)
   beginFrame(f, method == kTwoSolids);  // the depth mapping (reversed float depth where it can be)
 
   if (method == kTwoSolids)
     twoSolidsMethod(f, scene, f.option("op"));
   else if (method == kScs)
-    scs(f, normalize(tree));
+    scs(f, sop);
   else if (method == kAutomatic)
-    automatic(f, normalize(tree));
+    automatic(f, sop);
   else
-    goldfeather(f, normalize(tree), method == kLayered);
+    goldfeather(f, sop, method == kLayered);
   endFrame(f);  // GL's defaults again
   if (f.on("oracle")) checkAgainstRayCast(f, scene, tree, method);
 }

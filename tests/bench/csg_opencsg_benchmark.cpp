@@ -417,33 +417,53 @@ struct BenchScene {
 
 int main(int argc, char** argv) {
   stencil::keepFreedHeap();  // OpenCSG's side keeps its heap as the lesson's does
-  if (argc < 2 || std::string(argv[1]) == "--help") {
-    std::cout << "usage: csg_opencsg_benchmark OUT [--quick] [--goal] [--scene NAME]... [--check] [--page F.md]\n"
-                 "  (writes OUT.csv, OUT.md; --goal: OpenCSG Automatic, with and without bounding boxes,\n"
-                 "  and lesson 14's automatic method only; --scene: simple widget grid2d grid3d pipe\n"
-                 "  concave cuberack)\n";
-    return argc < 2 ? 2 : 0;
+  // Every argument is read, and every mistake refused (exit 2), before X is opened (77 without it).
+  const auto usage = [](const std::string& why) {
+    std::cerr << "csg_opencsg_benchmark: " << why << " (--help)\n";
+    return 2;
+  };
+  if (argc >= 2 && std::string(argv[1]) == "--help") {
+    std::cout
+        << "usage: csg_opencsg_benchmark OUT [--quick] [--goal] [--scene NAME]... [--check] [--page F.md]\n"
+           "  OUT        the output's path without extension: writes OUT.csv and OUT.md (the page's table)\n"
+           "  --quick    320x240, three scenes, three frames\n"
+           "  --goal     OpenCSG Automatic, with and without bounding boxes, and lesson 14's automatic\n"
+           "             method only, three rounds\n"
+           "  --scene N  that scene only (repeatable): simple widget grid2d grid3d pipe concave cuberack\n"
+           "  --check    exit 1 unless every lesson 14 method that accepts a scene agrees with the CSG ray\n"
+           "             cast off its edges and the automatic method is right on at least as many edge\n"
+           "             pixels as OpenCSG Automatic with bounding boxes\n"
+           "  --page F   rewrites F.md's table between <!-- opencsg-benchmark begin --> and\n"
+           "             <!-- opencsg-benchmark end --> with OUT.md\n"
+           "exit: 0 done (and checked); 1 a check failed or a GL error; 2 bad arguments;\n"
+           "  77 no X display or GLX context (run under xvfb-run -a)\n";
+    return 0;
   }
-  const fs::path out = argv[1];
+  if (argc < 2) return usage("OUT expected: the output's path without extension");
+  const std::string first = argv[1];
+  if (first.empty() || first[0] == '-')
+    return usage("OUT expected first, got '" + first + "': the output's path without extension may not start with '-'");
+  const fs::path out = first;
   bool quick = false, check = false, goal = false;
   std::vector<std::string> only;
   std::optional<fs::path> page;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
+    const bool takesValue = a == "--scene" || a == "--page";
+    if (takesValue && (i + 1 >= argc || argv[i + 1][0] == '-' || argv[i + 1][0] == '\0'))
+      return usage(a + (a == "--scene" ? " needs a scene name" : " needs a page FILE.md"));
     if (a == "--quick")
       quick = true;
     else if (a == "--check")
       check = true;
     else if (a == "--goal")
       goal = true;
-    else if (a == "--scene" && i + 1 < argc)
+    else if (a == "--scene")
       only.push_back(argv[++i]);
-    else if (a == "--page" && i + 1 < argc)
+    else if (a == "--page")
       page = argv[++i];
-    else {
-      std::cerr << "csg_opencsg_benchmark: unknown flag '" << a << "'\n";
-      return 2;
-    }
+    else
+      return usage("unknown flag '" + a + "'");
   }
   const std::string beginMarker = "<!-- opencsg-benchmark begin -->\n", endMarker = "<!-- opencsg-benchmark end -->";
   std::string pageText;

@@ -430,7 +430,9 @@ def plot_csg_opencsg(path):
             if key not in seen:
                 seen.append(key)
     plt = pyplot()
-    fig, axes = plt.subplots(1, len(sizes), figsize=(6 * len(sizes), 4.4), layout="constrained", squeeze=False)
+    # The legend in a row of its own below the panels, where it hides no point.
+    fig, axes = plt.subplots(2, len(sizes), figsize=(6 * len(sizes), 5.1), layout="constrained", squeeze=False,
+                             gridspec_kw={"height_ratios": [4.4, 0.6]})
     for ax, size in zip(axes[0], sizes):
         for i, (renderer, method) in enumerate(series):
             lib = renderer == "opencsg"
@@ -450,7 +452,11 @@ def plot_csg_opencsg(path):
         ax.grid(True, which="major", axis="y", alpha=0.3)
         ax.set_ylabel(f"CPU time per frame (ms, {size}, llvmpipe)")
         ax.set_title(f"OpenCSG's scenes at {size} (primitives)")
-    axes[0][-1].legend(fontsize=7, ncol=2)
+    key = fig.add_subplot(axes[1][0].get_gridspec()[1, :])
+    for ax in axes[1]:
+        ax.remove()
+    key.axis("off")
+    key.legend(*axes[0][0].get_legend_handles_labels(), loc="center", fontsize=7, ncol=5, frameon=False)
     return fig
 
 
