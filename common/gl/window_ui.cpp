@@ -976,6 +976,7 @@ int runWindow(Session& s) {
     // method 0 with a scene file, say) is said in one line and undone, and the window goes on.
     std::string drawnVariant = s.variant;
     std::vector<Option> drawnOptions = s.options;
+    OrbitCamera drawnCamera = s.camera;
     for (int frame = 0; !glfwWindowShouldClose(window); ++frame) {
       glfwPollEvents();
       if (st.scaleChanged) {
@@ -1028,16 +1029,22 @@ int runWindow(Session& s) {
       try {
         s.renderFrame(st.time, request);
       } catch (const UsageError& e) {
-        if (s.variant == drawnVariant && s.options == drawnOptions) throw;  // nothing to undo
-        st.status = s.info.id + ": " + e.what() + " (kept variant " + drawnVariant + " and its settings)";
+        // A view the lesson refuses (lesson 14: the near plane inside the solid) is undone as a
+        // variant or a setting is.
+        const bool sameView = s.camera.view() == drawnCamera.view() &&
+                              s.camera.projection(1.0f) == drawnCamera.projection(1.0f);
+        if (s.variant == drawnVariant && s.options == drawnOptions && sameView) throw;  // nothing to undo
+        st.status = s.info.id + ": " + e.what() + " (kept variant " + drawnVariant + ", its settings and the view)";
         st.statusUntil = glfwGetTime() + 6.0;
         std::cerr << st.status << "\n";
         if (s.variant != drawnVariant) s.setVariant(drawnVariant);
         s.options = drawnOptions;
+        s.camera = drawnCamera;
         s.renderFrame(st.time, request);
       }
       drawnVariant = s.variant;
       drawnOptions = s.options;
+      drawnCamera = s.camera;
       const Snapshot* snap = nullptr;
       if (step >= 0)
         for (const Snapshot& sn : s.recorder->snapshots()) snap = &sn;
