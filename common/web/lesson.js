@@ -197,7 +197,9 @@ function makeControls(info) {
   time.addEventListener('change', () => {
     const seconds = Number(time.value);
     if (time.value.trim() === '' || !Number.isFinite(seconds)) {
-      StencilPage.refused('time: expected a number of seconds, got \'' + time.value + '\'');
+      // As the URL's time is refused; a number box empties what is not a number (badInput).
+      StencilPage.refused('time expects a number of seconds, got ' +
+                          (time.validity.badInput ? 'something else' : 'nothing'));
       time.value = frameTime.toFixed(2);
       return;
     }

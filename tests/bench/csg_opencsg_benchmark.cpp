@@ -501,8 +501,10 @@ int main(int argc, char** argv) {
 
   const std::vector<Size> sizes = quick ? std::vector<Size>{{320, 240}} : std::vector<Size>{{320, 240}, {640, 480}};
   // The first frames pay for set-up (llvmpipe compiles a shader variant at a state's first use,
-  // over the first few frames): left out of both sides' medians.
-  const int warmup = 2, frames = 3, rounds = quick ? 1 : goal ? 3 : 2;
+  // over the first few frames): left out of both sides' medians. The lesson starts a process of
+  // its own for each measurement, cold: on the pipe at 640x480 its first seven frames took 35, 11-14,
+  // 9-10 and 6-9 ms, then 5.5-5.8 from the eighth on, so eight are left out.
+  const int warmup = 8, frames = 5, rounds = quick ? 1 : goal ? 3 : 2;
   // A measurement whose first round's median is longer than this is not repeated: its rounds'
   // spread is a small part of it, and the run stays within minutes.
   constexpr double kRepeatBelowMs = 400.0;
