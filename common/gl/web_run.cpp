@@ -83,14 +83,18 @@ std::vector<std::string> sceneFiles() {
 // What the page's controls are made from: the lesson's own declarations.
 std::string lessonJson(const WebRun& r) {
   const LessonInfo& info = *r.info;
+  // Each option with the value its variant gives it (the URL's set= names only those away from it).
+  const std::vector<Option> ofVariant = optionsFor(info, r.session->variant, {});
   nlohmann::ordered_json options = nlohmann::ordered_json::array();
-  for (const Option& o : r.session->options)
-    options.push_back({{"name", o.name}, {"help", o.help}, {"value", o.value}, {"min", o.min}, {"max", o.max}});
+  for (std::size_t i = 0; i < r.session->options.size(); ++i) {
+    const Option& o = r.session->options[i];
+    options.push_back({{"name", o.name}, {"help", o.help}, {"value", o.value}, {"variantValue", ofVariant[i].value},
+                       {"min", o.min}, {"max", o.max}});
+  }
   nlohmann::ordered_json variants = nlohmann::ordered_json::array();
   for (const Variant& v : info.variants) variants.push_back({{"name", v.name}, {"help", v.help}});
   // The options away from the variant's values, as the URL's set= gives them ("name:value").
   std::vector<std::string> changed;
-  const std::vector<Option> ofVariant = optionsFor(info, r.session->variant, {});
   for (std::size_t i = 0; i < r.session->options.size(); ++i)
     if (r.session->options[i].value != ofVariant[i].value)
       changed.push_back(r.session->options[i].name + ":" + std::to_string(r.session->options[i].value));
@@ -278,33 +282,41 @@ int runWeb(const LessonInfo& info, const SceneLessonFactory& make, int argc, cha
   const bool ok = guarded([&] {
     // What the URL asks for and the lesson refuses (a variant it lacks, an option out of range, a
     // scene file it cannot read) is said on the page, and the lesson drawn without it, so that its
-    // controls are there to choose again: the URL's settings less the first pair of them (a flag
-    // and its value: lesson.js gives only pairs) whose leaving out lets the lesson start, else the
-    // lesson as it starts.
-    std::vector<std::vector<char*>> tries{{argv, argv + argc}};
-    for (int k = 1; k + 1 < argc; k += 2) {
-      tries.push_back({argv, argv + argc});
-      tries.back().erase(tries.back().begin() + k, tries.back().begin() + k + 2);
-    }
-    if (argc > 1) tries.push_back({argv[0]});
-    for (std::size_t i = 0;; ++i) {
+    // controls are there to choose again. A refusal is said, then the first of the URL's settings
+    // (a flag and its value: lesson.js gives only pairs) whose leaving out lets the lesson start or
+    // changes what is refused is left out, and so on: every refused setting is said, and the lesson
+    // starts with the others (else as it starts).
+    const auto attempt = [&](std::vector<char*> args) {
       try {
-        const CommandLine cl =
-            parseCommandLine(run->declared, static_cast<int>(tries[i].size()), tries[i].data());
+        const CommandLine cl = parseCommandLine(run->declared, static_cast<int>(args.size()), args.data());
         if (cl.scene && !readsScenes)
-          throw UsageError("--scene: " + info.id +
-                           " draws only its own scene; the scene lessons read scene files");
+          throw UsageError("--scene: " + info.id + " draws only its own scene; the scene lessons read scene files");
         run->commandLine = cl;
         startSession(cl.scene);
-        break;
+        return std::string();
       } catch (const UsageError& e) {
-        if (i + 1 == tries.size()) throw;
-        if (i == 0) {  // said once: what the URL asks for
-          std::cerr << info.id << ": " << e.what() << "\n";
-          stencil_page_refused(e.what());
-          run->urlRefused = true;
-        }
+        return std::string(e.what());
       }
+    };
+    std::vector<char*> args{argv, argv + argc};
+    std::string why = attempt(args);
+    while (!why.empty()) {
+      if (args.size() == 1) throw UsageError(why);
+      std::cerr << info.id << ": " << why << "\n";
+      stencil_page_refused(why.c_str());
+      run->urlRefused = true;
+      std::string next = why;
+      for (std::size_t k = 1; k + 1 < args.size() && next == why; k += 2) {
+        std::vector<char*> less = args;
+        less.erase(less.begin() + static_cast<std::ptrdiff_t>(k), less.begin() + static_cast<std::ptrdiff_t>(k) + 2);
+        next = attempt(less);
+        if (next != why) args = less;
+      }
+      if (next == why) {  // no one setting: the lesson as it starts
+        args.resize(1);
+        next = attempt(args);
+      }
+      why = next;
     }
     const GlFeatures& f = run->session->context->features();
     std::cerr << run->declared.id << ": " << f.renderer << ", " << f.version << "; " << f.summary() << "\n";

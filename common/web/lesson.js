@@ -97,6 +97,10 @@ window.StencilPage = {
     box.textContent = '';
     if (!legend.rule) return;
     box.append(legend.rule + (legend.entries ? ':' : ''));
+    // A frame whose last passes clear the depth (lesson 13 draws its count over the whole picture)
+    // shows none: the passes before show what they left.
+    if (legend.rule.startsWith('depth: nothing drawn') && currentPass === 0)
+      box.append(' (at the frame\'s end; the pass stepper shows the depth each pass left)');
     const entries = legend.entries || [];
     for (const [value, pixels, colour] of entries.slice(0, maxLegendEntries)) {
       const entry = document.createElement('span');
@@ -153,8 +157,10 @@ function inPagesWords(message) {
       .replace(/\/dropped\/\d+\/scene\/|\/scenes\//g, '');  // the file's name, not where the page put it
 }
 
+// The URL's set=: the options away from the values their variant gives them (the others follow
+// the variant when the URL is loaded), null when none is.
 function settingsOf(info) {
-  return info.options.map(o => o.name + ':' + o.value).join(',');
+  return info.options.filter(o => o.value !== o.variantValue).map(o => o.name + ':' + o.value).join(',') || null;
 }
 
 function makeControls(info) {
@@ -187,7 +193,8 @@ function makeControls(info) {
   label('variant', variant, info.variants.find(v => v.name === info.variant)?.help);
   const variantHelp = document.createElement('span');  // what the variant shows, in view (a title is not, on a touch screen)
   variantHelp.className = 'help';
-  variantHelp.textContent = info.variants.find(v => v.name === info.variant)?.help ?? '';
+  variantHelp.textContent = (info.variants.find(v => v.name === info.variant)?.help ?? '') +
+                            (info.scene ? ' (drawn with the scene file ' + info.scene.replace(/^\/scenes\//, '') + ')' : '');
   box.appendChild(variantHelp);
   const time = document.createElement('input');
   time.id = 'time';
