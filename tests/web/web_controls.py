@@ -209,6 +209,16 @@ def main():
             drawn = page.canvas(f"refused-{gone}")
             page.check(f"{query}: the lesson drawn", len(set(drawn[i:i + 3] for i in range(0, len(drawn), 4))) > 1,
                        "a picture" if len(set(drawn[i:i + 3] for i in range(0, len(drawn), 4))) > 1 else "one colour")
+        # Two refused at once: each said, both left out, the lesson drawn as it starts.
+        browser.open("about:blank")
+        browser.open(f"{base}/{args.lesson}.html?variant=no-such-variant&time=soon&size=320x240&paused=1")
+        ready(browser, first)
+        status = browser.evaluate("document.getElementById('status').textContent")
+        page.check("two refused: each said", "unknown variant 'no-such-variant'" in status and
+                   "time expects a number" in status, f"'{status}'")
+        query = page.query()
+        page.check("two refused: the URL drops both", query.get("variant", [None])[0] != "no-such-variant" and
+                   query.get("time", [None])[0] != "soon", str(query))
     print(f"web_controls: {args.lesson}: {page.count} pictures, {len(page.failures)} checks failed, "
           f"in {time.monotonic() - start:.1f} s (pictures in {args.out})")
     return 1 if page.failures else 0
