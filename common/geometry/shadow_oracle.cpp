@@ -158,17 +158,13 @@ std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objectsI
   from[3] = glm::dvec4(glm::dvec3(origin), 1.0);
   const glm::dmat4 inverse = glm::inverse(glm::dmat4(viewProjection) * from);  // clip to (world - origin)
 
-  // For the ties: the pixels' rays in double, the window depth of a point (clip z / w: any
-  // affine map of it, GL's or the reversed one, scales depths and their moves alike) and of the
-  // point where a neighbouring pixel's ray meets a plane, the volume sides.
+  // For the ties, in double: each pixel's ray (cameraRay's, for a pixel off the picture too), the
+  // window depth where it meets a plane (clip z / w: any affine map of it, GL's or the reversed
+  // one, scales depths and their moves alike), and the volume sides with their planes' depths.
   const glm::dmat4 toClip = glm::dmat4(viewProjection) * from;
   const glm::dvec4 lightHere = light.w != 0.0f ? glm::dvec4(glm::dvec3(worldLight) / double(worldLight.w) -
                                                                  glm::dvec3(origin), 1.0)
                                                : glm::dvec4(glm::dvec3(worldLight), 0.0);
-  std::vector<VolumeSide> sides =
-      ties ? volumeSides(objectsInWorld, worldLight, glm::dvec3(origin), lightHere) : std::vector<VolumeSide>{};
-  // cameraRay's ray kept in double (a pixel off the picture too): planes' depths are extrapolated
-  // across the picture from a pixel's neighbours.
   const auto rayAt = [&](int x, int yTop) {
     const double ndcX = (x + 0.5) / size.x * 2.0 - 1.0, ndcY = 1.0 - (yTop + 0.5) / size.y * 2.0;
     const glm::dvec4 nearPoint = inverse * glm::dvec4(ndcX, ndcY, -1.0, 1.0);
@@ -176,35 +172,27 @@ std::vector<PixelClass> classifyPixels(const std::vector<OracleObject>& objectsI
     const glm::dvec3 o = glm::dvec3(nearPoint) / nearPoint.w;
     return std::pair{o, glm::dvec3(middle) / middle.w - o};
   };
-  const auto depthOf = [&](const glm::dvec3& p) {
-    const glm::dvec4 c = toClip * glm::dvec4(p, 1.0);
+  const auto depthOnPlane = [&](int x, int yTop, const glm::dvec3& q, const glm::dvec3& n) {
+    const auto [o, d] = rayAt(x, yTop);
+    const glm::dvec4 c = toClip * glm::dvec4(o + glm::dot(n, q - o) / glm::dot(n, d) * d, 1.0);
     return c.z / c.w;
   };
-  // The depth where pixel (x, yTop)'s ray meets the plane through q with normal n, and how much it
-  // changes to the next pixel in x and in y (a plane's window depth is affine in x and y).
-  const auto planeDepth = [&](int x, int yTop, const glm::dvec3& q, const glm::dvec3& n, double& moves) {
-    const auto at = [&](int px, int py) {
-      const auto [o, d] = rayAt(px, py);
-      return depthOf(o + glm::dot(n, q - o) / glm::dot(n, d) * d);
-    };
-    const double z = at(x, yTop);
-    const int dx = x + 1 < size.x ? 1 : -1, dy = yTop + 1 < size.y ? 1 : -1;
-    moves = std::abs(at(x + dx, yTop) - z) + std::abs(at(x, yTop + dy) - z);
-    return z;
-  };
-  for (VolumeSide& side : sides) {  // each plane's depth over the picture, from three pixels' rays
-    double moves = 0.0;
-    const double atOrigin = planeDepth(0, 0, side.a, side.n, moves);
-    side.depth = atOrigin;
-    side.dx = planeDepth(1, 0, side.a, side.n, moves) - atOrigin;
-    side.dy = planeDepth(0, 1, side.a, side.n, moves) - atOrigin;
+  std::vector<VolumeSide> sides =
+      ties ? volumeSides(objectsInWorld, worldLight, glm::dvec3(origin), lightHere) : std::vector<VolumeSide>{};
+  for (VolumeSide& side : sides) {  // a plane's depth is affine in the picture's x and y
+    side.depth = depthOnPlane(0, 0, side.a, side.n);
+    side.dx = depthOnPlane(1, 0, side.a, side.n) - side.depth;
+    side.dy = depthOnPlane(0, 1, side.a, side.n) - side.depth;
   }
   std::erase_if(sides, [](const VolumeSide& s) {  // a plane through the eye: a line in the picture
     return !std::isfinite(s.depth) || !std::isfinite(s.dx) || !std::isfinite(s.dy);
   });
   const auto tie = [&](int x, int yTop, const glm::vec3& hitPoint, const glm::vec3& normal) {
-    double surfaceMoves = 0.0;
-    const double surface = planeDepth(x, yTop, glm::dvec3(hitPoint), glm::dvec3(normal), surfaceMoves);
+    // The surface's plane at this pixel, and how much its depth changes to the next pixel in x and y.
+    const glm::dvec3 q(hitPoint), n(normal);
+    const double surface = depthOnPlane(x, yTop, q, n);
+    const double surfaceMoves = std::abs(depthOnPlane(x + 1, yTop, q, n) - surface) +
+                                std::abs(depthOnPlane(x, yTop + 1, q, n) - surface);
     for (const VolumeSide& side : sides) {
       const double depth = side.depth + side.dx * x + side.dy * yTop;
       // Only the snapping: a depth buffer's rounding is the lesson's choice of buffer (its 24-bit
