@@ -326,6 +326,13 @@ std::filesystem::path rawPathBeside(const std::filesystem::path& picture) {
   return raw;
 }
 
+// --oracle's edges beside its picture: FILE.edges.png.
+std::filesystem::path edgesPathBeside(const std::filesystem::path& picture) {
+  std::filesystem::path edges = picture;
+  edges.replace_extension(".edges.png");
+  return edges;
+}
+
 // --oracle: the stencil's lit receivers against a CPU ray cast of the scene the lesson drew.
 bool checkShadows(Session& s, const Image& stencil) {
   if (!s.shadowCheck)
@@ -354,9 +361,7 @@ bool checkShadows(Session& s, const Image& stencil) {
   Image edges(size.x, size.y, 1);
   const std::vector<bool> onEdges = oracleEdges(oracle, size, &surfaces, &ties);
   for (std::size_t i = 0; i < onEdges.size(); ++i) edges.pixels[i] = onEdges[i] ? 255 : 0;
-  std::filesystem::path edgesPath = *s.commandLine.oracle;
-  edgesPath.replace_extension(".edges.png");
-  s.outputs.addPng(edgesPath, edges);
+  s.outputs.addPng(edgesPathBeside(*s.commandLine.oracle), edges);
   std::cerr << (r.passed() ? "oracle ok: " : "oracle FAILED: ") << r.receiverPixels << " receiver pixels, "
             << r.shadowedPixels << " shadowed; " << r.disagreements << " disagree, " << r.onEdges
             << " of them on edges (picture: " << s.commandLine.oracle->string() << ")\n";
@@ -431,8 +436,10 @@ void checkOutputs(const CommandLine& cl, const LessonInfo& info) {
   }
   if (cl.oracle) {
     checkPictureOutput(*cl.oracle, "--oracle", true);
+    checkOutputFile(edgesPathBeside(*cl.oracle), "--oracle (its edges beside it)");
     files.push_back({"--oracle", *cl.oracle});
     files.push_back({"--oracle's raw classes", rawPathBeside(*cl.oracle)});
+    files.push_back({"--oracle's edges", edgesPathBeside(*cl.oracle)});
   }
   checkDistinctOutputs(files);
   // The output folders' own names: --passes NN-pass.png (and .stencil.png, .stencil.raw.png),
