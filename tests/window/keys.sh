@@ -5,7 +5,9 @@
 #   KEY    an xdotool key name (Tab, v, p, shift+p, Escape); or size:WxH or move:X,Y, which resize
 #          or move the window as a user's window manager would (xdotool windowsize, windowmove);
 #          or sleep:SECONDS, a pause (no REGEX); or click:X,Y or ctrlclick:X,Y, a click or a
-#          ctrl+click in the window at X,Y
+#          ctrl+click in the window at X,Y; or wait, no input: only the line to wait for (a key
+#          pressed just to wait, even shift, can be held down when the next click arrives: ImGui
+#          ignores a click on a header with a modifier down)
 #   REGEX  an extended regular expression that a line the window says after the key must match,
 #          within 10 s; the next step looks only at the lines after that one. Empty: no line wanted.
 # After the steps one Escape must close the window within 10 s.
@@ -66,6 +68,7 @@ for step in "$@"; do
     size:*) size=${key#size:}; xdotool windowsize "$wid" "${size%x*}" "${size#*x}" ;;
     move:*) at=${key#move:}; xdotool windowmove "$wid" "${at%,*}" "${at#*,}" ;;
     sleep:*) sleep "${key#sleep:}"; continue ;;
+    wait) ;;
     click:*) at=${key#click:}; xdotool mousemove --window "$wid" "${at%,*}" "${at#*,}" click 1 ;;
     ctrlclick:*)  # ctrl+click at X,Y in the window: ImGui's way into a slider's typed value
       at=${key#ctrlclick:}

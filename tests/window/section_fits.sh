@@ -10,9 +10,9 @@ here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
-out=$(KEYS_SH_SCREEN=1920x1080 "$here/keys.sh" "$1" --size "$2" --ui-scale 2 -- "shift=^panel shown: " \
+out=$(KEYS_SH_SCREEN=1920x1080 "$here/keys.sh" "$1" --size "$2" --ui-scale 2 -- "wait=^panel shown: " \
   "click:$3=^the (keys listed|draw calls and counts shown)$" \
-  "shift=^panel shown: .*; the panel fits [(][0-9]+ of ${2#*x} px[)].*; the keys $4$" "shift+s=^saved ")
+  "wait=^panel shown: .*; the panel fits [(][0-9]+ of ${2#*x} px[)].*; the keys $4$" "shift+s=^saved ")
 code=$?
 echo "$out"
 [ "$code" -eq 0 ] || exit "$code"
