@@ -724,6 +724,7 @@ int runProgram(const LessonInfo& lessonInfo, const SceneLessonFactory& factory, 
     while (!session) {
       try {
         session = std::make_unique<Session>(info, make, cl, choice.backend);
+        session->scene = scene ? &*scene : nullptr;
       } catch (const NoContextError& e) {
         // The automatic choice falls back from a display with no window to headless, and from
         // OSMesa to EGL; a backend given with --backend has no fallback.

@@ -76,7 +76,21 @@ void Session::resize(int width, int height) {
   makeFramebuffer(width, height);
 }
 
+// LessonInfo::refuseOptions as the command line applies it, with the options away from the
+// variant's values as the settings given: a change the window or the page makes that the command
+// line would refuse (lesson 14's own scenes picked while a scene file is drawn) is refused too.
+void Session::refuseChosenOptions() {
+  if (!info.refuseOptions || (accepted_ && accepted_->first == variant && accepted_->second == options)) return;
+  const std::vector<Option> variantValues = optionsFor(info, variant, {});
+  std::vector<std::pair<std::string, int>> settings;
+  for (std::size_t i = 0; i < options.size() && i < variantValues.size(); ++i)
+    if (options[i].value != variantValues[i].value) settings.emplace_back(options[i].name, options[i].value);
+  if (const std::string why = info.refuseOptions({options, settings, scene}); !why.empty()) throw UsageError(why);
+  accepted_.emplace(variant, options);
+}
+
 void Session::renderFrame(double time, FrameRequest request) {
+  refuseChosenOptions();
   const glm::ivec2 size{framebuffer->width(), framebuffer->height()};
   resetFrameState(framebuffer->id(), size, context->features());
   recorder->beginFrame(request);

@@ -59,7 +59,10 @@ class Session {
   // Resets the options to the variant's, then applies `settings` (--set) on top.
   void setVariant(const std::string& name, const std::vector<std::pair<std::string, int>>& settings = {});
   void resize(int width, int height);  // a new framebuffer (the window was resized)
-  // Renders one frame at `time` into the framebuffer; the recorder holds its passes.
+  // Renders one frame at `time` into the framebuffer; the recorder holds its passes. Throws
+  // UsageError, drawing nothing, where LessonInfo::refuseOptions refuses the variant and options as
+  // they are now (the window's keys and the page's controls change them after the command line's
+  // check).
   void renderFrame(double time, FrameRequest);
 
   const LessonInfo& info;
@@ -83,6 +86,7 @@ class Session {
   Frame::ShadowMaskWriter shadowMaskHook;  // when set, Frame::shadowMask calls it instead (--shadow-hours)
   bool reversedDepth = false;              // the variant's reversed float depth, where the driver allows it
   std::optional<glm::vec2> pointer;        // Frame::pointer for the next frame (the window sets it)
+  const Scene* scene = nullptr;            // --scene's (nullptr without one), for LessonInfo::refuseOptions
   float uiScale = 1.0f;                    // Frame::uiScale (the window sets it)
   // The lesson program the window asked to go to (the course's next or previous lesson): once this
   // session has closed its window, the program replaces this one (execv), in a window of its own.
@@ -94,7 +98,10 @@ class Session {
   void checkNeeds(const std::vector<Feature>&, const std::string& who) const;
   void makeFramebuffer(int width, int height);
   DepthFormat depthFormat() const;  // the framebuffer's for reversedDepth
+  void refuseChosenOptions();
   bool toldNoClipControl_ = false;
+  // The variant and options refuseChosenOptions last let through: checked again only when changed.
+  std::optional<std::pair<std::string, std::vector<Option>>> accepted_;
 };
 
 // The window's panel: a strip this many screen pixels wide at the window's left, beside the

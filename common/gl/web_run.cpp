@@ -272,6 +272,7 @@ void startSession(const std::optional<std::filesystem::path>& path) {
   const Scene* fromFile = r.scene.get();
   r.session = std::make_unique<Session>(*r.info, [make = r.make, fromFile] { return make(fromFile); },
                                         r.commandLine, Backend::Web);
+  r.session->scene = fromFile;
 }
 
 int runWeb(const LessonInfo& info, const SceneLessonFactory& make, int argc, char** argv, bool readsScenes) {
@@ -407,17 +408,6 @@ EMSCRIPTEN_KEEPALIVE int stencil_web_pass(int index) {
              : 1;
 }
 
-// A variant by name, then the current frame again. Returns 0, or 1 after saying why on the page.
-EMSCRIPTEN_KEEPALIVE int stencil_web_variant(const char* name) {
-  if (!run || !run->session) return 1;
-  return stencil::guarded([name] {
-           run->session->setVariant(name);
-           stencil::renderAndShow(run->time);
-         })
-             ? 0
-             : 1;
-}
-
 // The orbit camera turned by `azimuth` and `elevation` degrees (the elevation held within 89 degrees
 // of level) and its distance multiplied by `zoom` (held within 0.5-80 world units), as the window's
 // drag and wheel do, then the current frame again.
@@ -470,19 +460,24 @@ EMSCRIPTEN_KEEPALIVE int stencil_web_scene(const char* path) {
   return 1;
 }
 
-// An option's value (checked against its declared range), then the current frame again.
+// An option's value (checked against its declared range), then the current frame again. Returns
+// 0, or 1 after saying why on the page, the options drawn before kept (lesson 14's method 0 with a
+// scene file, say).
 EMSCRIPTEN_KEEPALIVE int stencil_web_option(const char* name, int value) {
   if (!run || !run->session) return 1;
-  return stencil::guarded([name, value] {
-           stencil::Session& s = *run->session;
-           std::vector<std::pair<std::string, int>> settings;
-           for (const stencil::Option& o : s.options)
-             settings.emplace_back(o.name, o.name == name ? value : o.value);
-           s.options = stencil::optionsFor(*run->info, s.variant, settings);
-           stencil::renderAndShow(run->time);
-         })
-             ? 0
-             : 1;
+  stencil::Session& s = *run->session;
+  const std::vector<stencil::Option> options = s.options;
+  if (stencil::guarded([&s, name, value] {
+        std::vector<std::pair<std::string, int>> settings;
+        for (const stencil::Option& o : s.options) settings.emplace_back(o.name, o.name == name ? value : o.value);
+        s.options = stencil::optionsFor(*run->info, s.variant, settings);
+        stencil::renderAndShow(run->time);
+      }))
+    return 0;
+  if (s.options == options) return 1;
+  s.options = options;
+  stencil::guarded([] { stencil::renderAndShow(run->time); });
+  return 1;
 }
 }
 #endif

@@ -17,6 +17,7 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <regex>
 #include <string>
 
 #include "gl/errors.h"
@@ -75,6 +76,9 @@ struct WindowState {
   float scaleShown = 1;                    // the UI scale when the panel was last shown (F1)
   std::string status = {};                 // a line shown over the picture until statusUntil (tell)
   double statusUntil = 0;
+  // The option a key stepped since the last frame drawn, and which way (+1, or -1 with shift): a
+  // value the lesson refuses is stepped past, so that the key reaches every value it takes.
+  std::optional<std::pair<std::size_t, int>> stepped = {};
 };
 
 // The panel's width in screen pixels at a UI scale.
@@ -192,6 +196,20 @@ std::string valueName(const Option& o, int value) {
   return {};
 }
 
+int steppedValue(const Option& o, int way) {
+  if (way > 0) return o.value >= o.max ? o.min : o.value + 1;
+  return o.value <= o.min ? o.max : o.value - 1;
+}
+
+// A lesson's refusal, written for the command line, in the window's words: an option by its name
+// (its key is in the panel), not --set NAME=VALUE.
+std::string inWindowWords(const std::string& message) {
+  std::string m = std::regex_replace(message, std::regex("--set ([a-z0-9_-]+)="), "$1 ");
+  m = std::regex_replace(m, std::regex("--set ([a-z0-9_-]+)"), "$1");
+  m = std::regex_replace(m, std::regex("--variant"), "the variant");
+  return std::regex_replace(m, std::regex("--scene"), "the scene file");
+}
+
 std::string optionLine(const Option& o) {
   const std::string name = valueName(o, o.value);
   return o.name + " = " + std::to_string(o.value) + (name.empty() ? std::string() : " (" + name + ")");
@@ -204,6 +222,26 @@ void optionChanged(WindowState& st, const Option& o) {
   st.countsBefore.clear();
   for (const auto& [name, n] : st.session.recorder->counts()) st.countsBefore.push_back(name);
   st.sayCountsAfter = 1;
+}
+
+// After a refusal of the value a key stepped an option to (lesson 14's method 0 with a scene file),
+// the values beyond it the same way round, each drawn until one is taken: true then, that frame
+// drawn; false where only the options drawn before are taken (the caller puts them back).
+bool stepPastRefusals(WindowState& st, const std::vector<Option>& drawnOptions, const FrameRequest& request) {
+  Session& s = st.session;
+  if (!st.stepped || st.stepped->first >= s.options.size()) return false;
+  std::vector<Option> others = s.options;
+  others[st.stepped->first] = drawnOptions[st.stepped->first];
+  if (others != drawnOptions) return false;  // more than the stepped option changed
+  Option& o = s.options[st.stepped->first];
+  for (o.value = steppedValue(o, st.stepped->second); o.value != drawnOptions[st.stepped->first].value;
+       o.value = steppedValue(o, st.stepped->second))
+    try {
+      s.renderFrame(st.time, request);
+      return true;
+    } catch (const UsageError&) {
+    }
+  return false;
 }
 
 // Why the panel at `scale` does not hold in a window ww x wh, or empty where it does: it would take
@@ -359,9 +397,12 @@ void onKey(GLFWwindow* w, int key, int, int action, int mods) {
     }
     default: break;
   }
-  for (Option& o : s.options)
-    if (std::toupper(static_cast<unsigned char>(o.key)) == key) {
-      o.value = o.value >= o.max ? o.min : o.value + 1;
+  // An option's key steps it forward, with shift back, round from one end to the other.
+  const int way = (mods & GLFW_MOD_SHIFT) ? -1 : 1;
+  for (std::size_t i = 0; i < s.options.size(); ++i)
+    if (Option& o = s.options[i]; std::toupper(static_cast<unsigned char>(o.key)) == key) {
+      o.value = steppedValue(o, way);
+      st.stepped = {i, way};
       optionChanged(st, o);
     }
 }
@@ -1034,14 +1075,19 @@ int runWindow(Session& s) {
         const bool sameView = s.camera.view() == drawnCamera.view() &&
                               s.camera.projection(1.0f) == drawnCamera.projection(1.0f);
         if (s.variant == drawnVariant && s.options == drawnOptions && sameView) throw;  // nothing to undo
-        st.status = s.info.id + ": " + e.what() + " (kept variant " + drawnVariant + ", its settings and the view)";
-        st.statusUntil = glfwGetTime() + 6.0;
-        std::cerr << st.status << "\n";
-        if (s.variant != drawnVariant) s.setVariant(drawnVariant);
-        s.options = drawnOptions;
-        s.camera = drawnCamera;
-        s.renderFrame(st.time, request);
+        const std::string refused = s.info.id + ": " + inWindowWords(e.what());
+        if (stepPastRefusals(st, drawnOptions, request)) {
+          tell(st, refused + " (stepped on)");
+          optionChanged(st, s.options[st.stepped->first]);
+        } else {
+          tell(st, refused + " (kept variant " + drawnVariant + ", its settings and the view)");
+          if (s.variant != drawnVariant) s.setVariant(drawnVariant);
+          s.options = drawnOptions;
+          s.camera = drawnCamera;
+          s.renderFrame(st.time, request);
+        }
       }
+      st.stepped.reset();
       drawnVariant = s.variant;
       drawnOptions = s.options;
       drawnCamera = s.camera;

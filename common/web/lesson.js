@@ -154,6 +154,7 @@ function inPagesWords(message) {
   return message.replace(/--list-variants shows them/, 'the variant list shows them')
       .replace(/--help lists the options/, 'the controls list the options')
       .replace(/^--(variant|time|size|set|scene)\b/, '$1')
+      .replace(/ --set (\w+)=/g, ' $1 ').replace(/ --scene /g, ' the scene file ')
       .replace(/\/dropped\/\d+\/scene\/|\/scenes\//g, '');  // the file's name, not where the page put it
 }
 

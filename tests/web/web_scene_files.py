@@ -13,6 +13,8 @@ get on the page (the same reader's line, after the file's path). Checks:
   scene (its scene list on "(the lesson's own)");
 - the good file and its mesh picked: the lesson draws that scene (the canvas changes) and the page
   says no error;
+- options the native lesson refuses with a scene file (scene 1, method 0) set with their boxes:
+  the page says why in its words, the box shows the value drawn, the picture stays;
 - the bad file picked: the page says what the native says of it, and the picture stays the good
   scene's;
 - a PNG picked: the page says it is no scene file, and the picture stays.
@@ -107,6 +109,21 @@ def main():
         kind, text = status()
         shown = canvas("good-scene")
         check(f"{args.good} picked with its mesh is drawn", kind != "error" and shown != own, f"the page says '{text}'")
+
+        # Options the native lesson refuses with a scene file (--set scene=1, --set method=0), set
+        # with their boxes: said, the box put back, the scene still drawn.
+        for name, value, says in (("scene", 1, "picks among the lesson's own scenes"),
+                                  ("method", 0, "method 0 draws the demo's two solids")):
+            before = browser.evaluate(f"document.getElementById('option-{name}').value")
+            browser.evaluate("document.getElementById('status').className = ''")
+            browser.evaluate(f"(b => {{ b.value = '{value}'; b.dispatchEvent(new Event('change')); }})"
+                             f"(document.getElementById('option-{name}'))")
+            kind, text = status()
+            check(f"option {name} set to {value} with the scene file: refused on the page",
+                  kind == "error" and says in text and "--" not in text, f"the page says '{text}'")
+            check(f"the box shows {name} drawn, the scene still drawn",
+                  browser.evaluate(f"document.getElementById('option-{name}').value") == before and
+                  canvas(f"after-{name}-{value}") == shown)
 
         pick([bad, *bad.parent.glob(bad.stem + ".obj")])
         code, expected = native_message(args.native, bad)
