@@ -306,6 +306,11 @@ CsgImage rayCastCsg(const std::vector<CsgPrimitive>& primitives, const CsgTree& 
     scene.add(*p.mesh, p.model);
   }
   const glm::dmat4 inverse = glm::inverse(glm::dmat4(viewProjection));
+  // A singular matrix (a near plane lost to rounding) would cast no ray at all, and an empty
+  // picture would agree with it.
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(inverse[c][r])) throw std::invalid_argument("rayCastCsg: the view-projection matrix has no inverse");
   CsgImage image;
   image.size = size;
   const std::size_t n = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y);

@@ -128,8 +128,8 @@ struct CsgImage {
 // from the world's origin) count as one crossing, so a shared surface is decided by the tree, not
 // by rounding: A - B with B's top face in A's top face opens the pocket. Surfaces past the far
 // plane are not seen. Throws
-// std::invalid_argument for a primitive RayScene::add refuses or a tree naming a primitive
-// that is not given.
+// std::invalid_argument for a primitive RayScene::add refuses, a tree naming a primitive
+// that is not given, or a viewProjection without an inverse (no rays to cast).
 CsgImage rayCastCsg(const std::vector<CsgPrimitive>& primitives, const CsgTree& tree,
                     const glm::mat4& viewProjection, glm::ivec2 size);
 

@@ -360,7 +360,7 @@ int Csg::LayerCounts::at(int x, int y) const {
 Csg::Footprint Csg::footprintOf(const Frame& f, int i) const {
   const auto& [low, high] = boxes_[static_cast<std::size_t>(i)];
   const glm::mat4& model = models_[static_cast<std::size_t>(i)];
-  const glm::mat4 toClip = f.projection * f.view * model;
+  const glm::mat4 toClip = f.projection * view_ * model;
   Footprint footprint;
   glm::vec2 lowNdc(std::numeric_limits<float>::max()), highNdc(-std::numeric_limits<float>::max());
   bool behind = false;
@@ -421,7 +421,7 @@ BoundingSphere Csg::worldSphereOf(int i) const {
 // conservative: a clear too many, never one too few.
 bool Csg::reachesPastFar(const Frame& f, int i) const {
   const BoundingSphere sphere = worldSphereOf(i);
-  const glm::vec3 centre = glm::vec3(f.view * glm::vec4(sphere.centre, 1.0f));
+  const glm::vec3 centre = glm::vec3(view_ * glm::vec4(sphere.centre, 1.0f));
   // Its farthest point from the eye along the view axis, projected.
   const glm::vec4 clip = f.projection * glm::vec4(centre.x, centre.y, centre.z - sphere.radius, 1.0f);
   return clip.w > 0.0f && clip.z > clip.w;

@@ -1,7 +1,9 @@
 // Lesson 14 around its algorithms: the lesson's own scenes (the demo's two solids, the rounded
 // cube, grids and a rack after OpenCSG's...), a scene file's csg line, the cameras, options and variants.
 #include <algorithm>
+#include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
+#include <sstream>
 #include <string>
 #include <vector>
 #ifdef __GLIBC__  // (defined by the headers above)
@@ -210,8 +212,10 @@ bool nearRectangleMeets(const Mesh& mesh, const glm::dmat4& model, const glm::dm
 //     near plane cuts is drawn right (its faces counted behind the surface: z-fail).
 //   - the far plane cutting a primitive without depth clamping (frontFace), as in a browser
 //     without EXT_depth_clamp: the faces past it would be lost to the counts.
+//   - a near plane nearer than 2^-24 of the farthest the solid reaches along the view (refuseNear).
 void Csg::refuseCuts(const Frame& f, const CsgScene& scene, const SumOfProducts& sop) const {
-  const glm::dmat4 viewProjection(f.projection * f.view);
+  refuseNear(f);
+  const glm::dmat4 viewProjection = glm::dmat4(f.projection) * glm::dmat4(view_);
   std::vector<int> meets(scene.primitives.size(), -1);  // per primitive: not yet decided, 0 or 1
   for (const CsgProduct& p : sop.products) {
     bool all = !p.intersected.empty();
@@ -232,6 +236,33 @@ void Csg::refuseCuts(const Frame& f, const CsgScene& scene, const SumOfProducts&
         throw UsageError("the far plane may cut '" + scene.primitives[i].name +
                          "', and without depth clamping (EXT_depth_clamp) its faces past it are lost to the "
                          "counts; make far larger");
+}
+
+// A perspective frame's near plane n against the farthest point D of the primitives' bounding
+// spheres along the view. GL's depth mapping puts distance d at 1 - n/d (times f / (f - n) for a
+// far plane at f), held in steps of 2^-24 (a float just below 1, a 24-bit buffer): Frame::projection
+// is that mapping in float, so is the depth without clip control, and the oracle's depths are its
+// window depths. Past n 2^24 a distance is the far plane's depth, and -(f + n)/(f - n) rounds to
+// within a step of -1, which moves a far plane there (far 30 with near 1e-6 lay at 16.8). Refused
+// below D 2^-24: every point of the solid then lies a step or more in front of the far plane.
+void Csg::refuseNear(const Frame& f) const {
+  const glm::dmat4 p(f.projection);
+  if (p[2][3] != -1.0 || p[3][3] != 0.0) return;  // parallel: depth linear in the distance
+  const double near = p[3][2] / (p[2][2] - 1.0);
+  double farthest = 0.0;
+  for (std::size_t i = 0; i < models_.size(); ++i) {
+    const BoundingSphere s = worldSphereOf(static_cast<int>(i));
+    farthest = std::max(farthest, -(glm::dmat4(view_) * glm::dvec4(glm::dvec3(s.centre), 1.0)).z + s.radius);
+  }
+  const double bound = std::ldexp(farthest, -24);
+  if (near >= bound) return;
+  std::ostringstream out;
+  out.precision(3);
+  out << "the near plane (" << near << ") is nearer than 2^-24 times the distance of the solid's farthest point "
+      << "along the view (" << farthest << "): GL's depth mapping puts distance d at 1 - near/d, held in steps of "
+      << "2^-24 (a float just below 1, or 24 bits), so that point would lie at the far plane's depth; make near at "
+      << "least " << bound;
+  throw UsageError(out.str());
 }
 
 void Csg::startCounts(Frame& f, const SumOfProducts& sop, std::initializer_list<const char*> zeros,

@@ -100,7 +100,7 @@ class Csg final : public Lesson {
   void workBuffer(glm::ivec2 size);
   static void makeWorkBuffer(glm::ivec2 size, GLuint& framebuffer, GLuint& depth, GLuint& colour, GLuint& primitive);
   void clearWork();
-  CsgTree prepare(const CsgScene& scene, double time);
+  CsgTree prepare(const CsgScene& scene, const Frame& f);
   static bool subtracted(const CsgProduct& p, int primitive);
   // Depth: white, for the depth and stencil alone; Selected: lit, the primitive written beside the
   // depth; Primitive: the primitive alone (the automatic method); Merged: lit where the frame holds
@@ -128,6 +128,7 @@ class Csg final : public Lesson {
 
   // ---- classroom.cpp: what no method draws, refused; the --stats counts a method starts from -----
   void refuseCuts(const Frame& f, const CsgScene& scene, const SumOfProducts& sop) const;
+  void refuseNear(const Frame& f) const;
   static void startCounts(Frame& f, const SumOfProducts& sop, std::initializer_list<const char*> zeros,
                           bool beforePruning = false);
 
@@ -140,7 +141,11 @@ class Csg final : public Lesson {
   GpuMesh quad_;
   std::vector<std::unique_ptr<GpuMesh>> meshes_;
   std::vector<glm::vec3> colours_;
+  // This frame's (prepare): the point everything is drawn from (the world's origin, or the eye far
+  // from it); per primitive, its model to the world less origin_; and the view from there.
+  glm::vec3 origin_{0.0f};
   std::vector<glm::mat4> models_;
+  glm::mat4 view_{1.0f};
   std::string preparedFor_;
   std::vector<bool> convex_;  // per primitive, from its mesh (isConvex)
   std::vector<std::pair<glm::vec3, glm::vec3>> boxes_;  // per primitive, its object-space bounding box

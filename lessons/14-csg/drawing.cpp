@@ -96,9 +96,9 @@ void Csg::clearWork() {
   glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 }
 
-// The scene's meshes on the GPU (made again only when the expression changes), its models at
-// `time` (the spin), and its expression parsed.
-CsgTree Csg::prepare(const CsgScene& scene, double time) {
+// The scene's meshes on the GPU (made again only when the expression changes), its models at the
+// frame's time (the spin), the frame they are drawn from, and its expression parsed.
+CsgTree Csg::prepare(const CsgScene& scene, const Frame& f) {
   if (scene.expression != preparedFor_) {
     meshes_.clear();
     colours_.clear();
@@ -118,8 +118,27 @@ CsgTree Csg::prepare(const CsgScene& scene, double time) {
   }
   models_.clear();
   const glm::mat4 spin = glm::rotate(
-      glm::mat4(1.0f), glm::radians(scene.spinDegPerSecond * static_cast<float>(time)), {0, 1, 0});
+      glm::mat4(1.0f), glm::radians(scene.spinDegPerSecond * static_cast<float>(f.time)), {0, 1, 0});
   for (const Primitive& p : scene.primitives) models_.push_back(spin * p.model);
+  // Drawn from the world's origin while the eye is no farther from it than the solid's farthest
+  // point is from the eye (every picture near the origin as before, coincident faces tied as
+  // before), else from the eye: each model moved by -eye in double and rounded once, the view the
+  // frame's rotation alone. A float rounds a coordinate by 2^-24 of its size, and none is then
+  // larger than twice the solid's farthest distance from the eye (in world coordinates 9e5 units
+  // out a vertex rounded to 1/16 unit, and Frame::view's translation as much).
+  origin_ = glm::vec3(0.0f);
+  view_ = f.view;
+  double farthest = 0.0;
+  for (std::size_t i = 0; i < models_.size(); ++i) {
+    const BoundingSphere s = worldSphereOf(static_cast<int>(i));
+    farthest = std::max(farthest, glm::distance(glm::dvec3(s.centre), glm::dvec3(f.eye)) + s.radius);
+  }
+  if (glm::length(glm::dvec3(f.eye)) > farthest) {
+    origin_ = f.eye;
+    view_ = glm::mat4(glm::mat3(f.view));
+    const glm::dmat4 fromEye = glm::translate(glm::dmat4(1.0), -glm::dvec3(origin_));
+    for (glm::mat4& m : models_) m = glm::mat4(fromEye * glm::dmat4(m));
+  }
   std::vector<std::string> names;
   for (const Primitive& p : scene.primitives) names.push_back(p.name);
   return parseCsg(scene.expression, names);
@@ -149,9 +168,10 @@ void Csg::drawTargets(const CsgProduct& p, const std::vector<int>& targets, Pain
 
 void Csg::setLighting(const Program& p, const Frame& f) const {
   p.set("ambient", glm::vec3(0.25f));
-  p.set("light", glm::vec4(3.0f, 6.0f, 4.0f, 1.0f));
+  // World positions less origin_ (prepare): the light and the eye moved with them.
+  p.set("light", glm::vec4(glm::vec3(glm::dvec3(3.0, 6.0, 4.0) - glm::dvec3(origin_)), 1.0f));
   p.set("lightColour", glm::vec3(1.0f));
-  p.set("eye", f.eye);
+  p.set("eye", glm::vec3(glm::dvec3(f.eye) - glm::dvec3(origin_)));
   p.set("shininess", 24.0f);
 }
 
@@ -228,7 +248,7 @@ void Csg::frontFace(int i) {
 // further()...). The frame is cleared here for the two-solid method, which draws straight into it;
 // the others clear it at their first merge (clearFrame).
 void Csg::beginFrame(const Frame& f, bool clearNow) {
-  mirroredView_ = glm::determinant(glm::mat3(f.view)) < 0.0f;  // a mirrored camera
+  mirroredView_ = glm::determinant(glm::mat3(view_)) < 0.0f;  // a mirrored camera
   pastFar_.assign(models_.size(), false);  // the primitives the far plane may cut (frontFace)
   for (std::size_t i = 0; i < models_.size(); ++i) pastFar_[i] = reachesPastFar(f, static_cast<int>(i));
   depthClamped_ = false;
@@ -240,7 +260,7 @@ void Csg::beginFrame(const Frame& f, bool clearNow) {
   frameToClear_ = true;
   if (clearNow) clearFrame();
   glEnable(GL_CULL_FACE);  // a solid's front or back faces, one at a time
-  const glm::mat4 viewProjection = depth_.projection * f.view;
+  const glm::mat4 viewProjection = depth_.projection * view_;
   for (Program* p : {&light_, &depthOnly_, &merge_, &select_}) p->set("viewProjection", viewProjection);
   setLighting(light_, f);
   setLighting(merge_, f);

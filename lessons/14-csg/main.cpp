@@ -63,7 +63,7 @@ namespace stencil::csg_lesson {
 void Csg::render(Frame& f) {
   const int method = f.option("method");
   const CsgScene scene = sceneFor(f, fromFile_);
-  const CsgTree tree = prepare(scene, f.time);
+  const CsgTree tree = prepare(scene, f);  // the models and the view (from the eye, far out)
   const SumOfProducts sop = normalize(tree);
   refuseCuts(f, scene, sop);  // the near plane cutting the result (no method draws its cap)
   beginFrame(f, method == kTwoSolids);  // the depth mapping (reversed float depth where it can be)

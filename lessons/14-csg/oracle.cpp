@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <glm/gtc/matrix_transform.hpp>
 #include <string>
 #include <vector>
 
@@ -13,10 +14,14 @@ namespace stencil::csg_lesson {
 
 // The frame's depth and the primitive its stencil records, against the CSG ray cast.
 void Csg::checkAgainstRayCast(Frame& f, const CsgScene& scene, const CsgTree& tree, int method) const {
+  // Cast from the eye, whichever frame the picture was drawn from: every coordinate its distance
+  // from the eye, the models moved in double and rounded once, the view its rotation alone.
+  const glm::dmat4 toEye = glm::translate(glm::dmat4(1.0), glm::dvec3(origin_) - glm::dvec3(f.eye));
   std::vector<CsgPrimitive> primitives;
   for (std::size_t i = 0; i < scene.primitives.size(); ++i)
-    primitives.push_back({&scene.primitives[i].mesh, models_[i]});
-  CsgImage expected = rayCastCsg(primitives, tree, f.projection * f.view, f.size);
+    primitives.push_back({&scene.primitives[i].mesh, glm::mat4(toEye * glm::dmat4(models_[i]))});
+  const glm::mat4 viewProjection = f.projection * glm::mat4(glm::mat3(f.view));
+  CsgImage expected = rayCastCsg(primitives, tree, viewProjection, f.size);
   // 8 stencil bits record the primitive modulo 255 (0 is none): past 254 primitives the ray
   // cast's are compared modulo 255 too.
   if (method != kTwoSolids)
@@ -48,7 +53,7 @@ void Csg::checkAgainstRayCast(Frame& f, const CsgScene& scene, const CsgTree& tr
   GLint subpixelBits = 4;  // GL's least
   glGetIntegerv(GL_SUBPIXEL_BITS, &subpixelBits);
   const float snap = std::ldexp(1.0f, -std::max(subpixelBits, 4));
-  const std::vector<bool> edges = csgEdgePixels(primitives, f.projection * f.view, f.size, snap);
+  const std::vector<bool> edges = csgEdgePixels(primitives, viewProjection, f.size, snap);
   // Depth in window units of GL's mapping: a few steps of 2^-24 (the 24-bit buffer's rounding, or
   // a reversed float depth's taken from 1; the ray cast's float rounding near 1; the rasterizer's
   // interpolation), plus the surface's slope over the snapping.

@@ -175,6 +175,10 @@ TEST(Csg, RayCastTwoCubesFaceOn) {
   EXPECT_NEAR(hole.depth[at(hole, 21, 20)], depthOnPlane(21, 20, 4.3f), 1e-6f);
   EXPECT_THROW(rayCastCsg({prims[0]}, parseCsg("A - B", names), frontView(), {41, 41}),
                std::invalid_argument);
+  // A matrix without an inverse casts no ray: refused, not an empty picture.
+  glm::mat4 singular = frontView();
+  for (int c = 0; c < 4; ++c) singular[c][2] = singular[c][3];  // clip z is clip w
+  EXPECT_THROW(rayCastCsg(prims, parseCsg("A - B", names), singular, {41, 41}), std::invalid_argument);
 }
 
 TEST(Csg, RayCastConcavePrimitiveHasTwoIntervals) {
