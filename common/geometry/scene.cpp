@@ -891,12 +891,18 @@ void checkCsg(Scene& scene, const std::string& file, std::size_t column) {
       throw SceneError(where + "csg: object '" + o.name +
                        "' faces inwards (a solid written inside out): CSG counts a primitive's front "
                        "faces as where a ray enters it; turn its faces round");
-    if (!report.closedManifold())
-      throw SceneError(where + "csg: object '" + o.name + "' is not a closed solid (" +
-                       std::to_string(report.borderEdges) + " border edges, " +
-                       std::to_string(report.nonManifoldEdges) + " non-manifold, " +
-                       std::to_string(report.inconsistentEdges) +
-                       " inconsistently wound): CSG needs each primitive's inside");
+    if (!report.closedManifold()) {
+      const auto edges = [](std::size_t n) { return std::to_string(n) + (n == 1 ? " edge" : " edges"); };
+      std::string problems;
+      if (report.borderEdges > 0) problems = "open: " + edges(report.borderEdges) + " with one face";
+      if (report.nonManifoldEdges > 0)
+        problems += (problems.empty() ? "" : "; ") + edges(report.nonManifoldEdges) + " shared by three or more faces";
+      if (report.inconsistentEdges > 0)
+        problems += (problems.empty() ? "" : "; ") + edges(report.inconsistentEdges) + " walked the same way by both faces";
+      throw SceneError(where + "csg: object '" + o.name + "' is not a closed, consistently wound solid (" + problems +
+                       "): lesson 14 tells a primitive's inside by the parity of its faces along a ray, which "
+                       "needs each edge shared by two faces that walk it in opposite directions; repair the mesh");
+    }
   }
 }
 
@@ -986,25 +992,29 @@ Scene parseScene(std::string_view text, const std::filesystem::path& file, const
     }
   }
   // Casters are prepared once their settings are read: 'casts no' spares a mesh that cannot cast.
+  const auto caster = [&](const SceneObject& o) {
+    return name + ":" + std::to_string(o.line) + ": object '" + o.name + "' cannot cast shadow volumes: ";
+  };
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     SceneObject& o = scene.objects[i];
     if (!o.casts) continue;
-    const std::string where = name + ":" + std::to_string(o.line) + ": object '" + o.name + "' ";
     try {
       o.caster = prepareCaster(casterInputs[i].positions.empty() ? o.mesh : casterInputs[i]);
     } catch (const std::invalid_argument& e) {
-      throw SceneError(where + "cannot cast shadow volumes: " + e.what());
-    }
-    if (!o.caster.report.usable()) {
-      std::string problems;
-      for (const std::string& m : o.caster.report.messages)
-        if (m.starts_with("not two-manifold") || m.starts_with("inconsistently wound"))
-          problems += (problems.empty() ? "" : "; ") + m;
-      throw SceneError(where + "cannot cast shadow volumes: " + problems +
-                       " (repair the mesh, or give it 'casts no')");
+      throw SceneError(caster(o) + e.what());
     }
   }
+  // What the csg line needs of the objects it names is said first: a closed, consistently wound
+  // solid, whether it casts or not ('casts no' would not make one of a mesh that cannot cast).
   if (scene.csgLine != 0) checkCsg(scene, name, csgColumn);
+  for (const SceneObject& o : scene.objects) {
+    if (!o.casts || o.caster.report.usable()) continue;
+    std::string problems;
+    for (const std::string& m : o.caster.report.messages)
+      if (m.starts_with("not two-manifold") || m.starts_with("inconsistently wound"))
+        problems += (problems.empty() ? "" : "; ") + m;
+    throw SceneError(caster(o) + problems + " (repair the mesh, or give it 'casts no')");
+  }
   const std::string end = name + ":" + std::to_string(std::max(lineNumber, 1)) + ": ";
   if (!haveCamera) throw SceneError(end + "the scene has no camera line");
   if (scene.lights.empty()) throw SceneError(end + "the scene has no light");

@@ -12,8 +12,13 @@ set(STENCIL_WEB_SCENES_15-robust-zfail *.scene hard/*.scene)
 set(STENCIL_WEB_SCENES_16-fast-robust-shadows *.scene hard/*.scene)
 # Left out of a lesson's list: the files it refuses as they stand (the command line's one line and
 # exit 2): lesson 15 takes closed casters only, and the dusk scene's sun is below the horizon but
-# for --shadow-hours, which the page does not offer.
+# for --shadow-hours, which the page does not offer. Lesson 14's comb of 300 slabs 0.002 apart
+# draws about 300 layers a frame (22 s in SwiftShader) and its hole's walls are striped finer than a
+# pixel, where SwiftShader's vertex snapping (1/16 pixel) and llvmpipe's (1/256) cover different
+# slabs at pixels whose neighbours agree (4 at 320x240): the browser's test could not tell it from
+# a fault.
 set(STENCIL_WEB_SCENES_LEFT_OUT_13-depth-complexity sun-box-building-dusk.scene)
+set(STENCIL_WEB_SCENES_LEFT_OUT_14-csg csg/comb-300-split.scene)
 set(STENCIL_WEB_SCENES_LEFT_OUT_15-robust-zfail sun-box-building-dusk.scene hard/light-in-open-container.scene
     hard/open-mesh.scene)
 set(STENCIL_WEB_SCENES_LEFT_OUT_16-fast-robust-shadows sun-box-building-dusk.scene)

@@ -252,7 +252,7 @@ std::vector<bool> Csg::primitivesIn(const ScissorRect& r) const {
 void Csg::layeredByLayerRects(Frame& f, const CsgProduct& p, const ScissorRect& within) {
   std::vector<int> targets = p.intersected;
   targets.insert(targets.end(), p.subtracted.begin(), p.subtracted.end());
-  const bool queries = f.on("queries");
+  const bool queries = queriesWait(f);
   LayerCounts counts;
   const int k = queries ? 255 : targetDepthComplexity(f, p, targets, &counts);
   // Per target, the layers its rectangle has pixels of.

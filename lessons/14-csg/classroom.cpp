@@ -1,13 +1,9 @@
 // Lesson 14 around its algorithms: the lesson's own scenes (the demo's two solids, the rounded
 // cube, grids and a rack after OpenCSG's...), a scene file's csg line, the cameras, options and variants.
 #include <algorithm>
-#include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
-#include <sstream>
 #include <string>
 #include <vector>
-#ifdef __GLIBC__  // (defined by the headers above)
-#endif
 
 #include "csg_lesson.h"
 #include "geometry/shadow_volume.h"
@@ -143,128 +139,6 @@ CsgScene fileScene(const Scene& file, double time) {
 
 }  // namespace
 
-namespace {
-
-// Whether the window segment p-q (normalized device x, y) meets the square [-1, 1]^2 (Liang and
-// Barsky's clip).
-bool segmentMeetsSquare(glm::dvec2 p, glm::dvec2 q) {
-  const glm::dvec2 d = q - p;
-  double t0 = 0.0, t1 = 1.0;
-  const double edges[4][2] = {{-d.x, p.x + 1.0}, {d.x, 1.0 - p.x}, {-d.y, p.y + 1.0}, {d.y, 1.0 - p.y}};
-  for (const auto& [along, room] : edges) {
-    if (along == 0.0) {
-      if (room < 0.0) return false;
-    } else if (along < 0.0) {
-      t0 = std::max(t0, room / along);
-    } else {
-      t1 = std::min(t1, room / along);
-    }
-  }
-  return t0 <= t1;
-}
-
-// Whether the near plane's rectangle (the part of the near plane the frame sees) meets the solid
-// that the closed mesh at `toClip` (world to GL's clip space, the model included) bounds: one of
-// its triangles crosses the rectangle, or, crossing none, the rectangle lies inside it (its centre
-// does: a ray from there crosses the surface an odd number of times).
-bool nearRectangleMeets(const Mesh& mesh, const glm::dmat4& model, const glm::dmat4& viewProjection) {
-  const glm::dmat4 toClip = viewProjection * model;
-  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-    glm::dvec4 c[3];
-    for (int k = 0; k < 3; ++k) c[k] = toClip * glm::dvec4(glm::dvec3(mesh.positions[mesh.indices[t + k]]), 1.0);
-    std::vector<glm::dvec2> on;  // where the triangle's edges meet the near plane z = -w
-    for (int k = 0; k < 3; ++k) {
-      const glm::dvec4 &a = c[k], &b = c[(k + 1) % 3];
-      const double da = a.z + a.w, db = b.z + b.w;
-      glm::dvec4 p = a;
-      if (da != 0.0 && (da < 0.0) == (db < 0.0)) continue;
-      if (da != 0.0) p = a + (b - a) * (da / (da - db));
-      if (p.w > 0.0) on.emplace_back(p.x / p.w, p.y / p.w);
-    }
-    for (std::size_t i = 0; i < on.size(); ++i)
-      for (std::size_t j = i; j < on.size(); ++j)
-        if (segmentMeetsSquare(on[i], on[j])) return true;
-  }
-  const glm::dmat4 fromClip = glm::inverse(viewProjection);
-  const glm::dvec4 centre = fromClip * glm::dvec4(0.0, 0.0, -1.0, 1.0);
-  const glm::dvec3 o = glm::dvec3(centre) / centre.w, dir = glm::normalize(glm::dvec3(0.3123, 0.5377, 0.7836));
-  int crossings = 0;  // Moller and Trumbore's ray-triangle test
-  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-    glm::dvec3 v[3];
-    for (int k = 0; k < 3; ++k) v[k] = glm::dvec3(model * glm::dvec4(glm::dvec3(mesh.positions[mesh.indices[t + k]]), 1.0));
-    const glm::dvec3 e1 = v[1] - v[0], e2 = v[2] - v[0], h = glm::cross(dir, e2);
-    const double det = glm::dot(e1, h);
-    if (det == 0.0) continue;
-    const glm::dvec3 s = o - v[0], q = glm::cross(s, e1);
-    const double u = glm::dot(s, h) / det, w = glm::dot(dir, q) / det;
-    if (u >= 0.0 && w >= 0.0 && u + w <= 1.0 && glm::dot(e2, q) / det > 0.0) ++crossings;
-  }
-  return crossings % 2 == 1;
-}
-
-}  // namespace
-
-// What no method can draw, refused (UsageError) rather than drawn wrong:
-//   - the near plane cutting the result: where the near plane's point lies inside the result the
-//     ray cast sees a cap there, and no method draws one. It can lie inside a product only where it
-//     lies inside each of the product's intersected primitives: refused where the near plane's
-//     rectangle meets all of them (one cut by it, or holding it all). A subtracted primitive the
-//     near plane cuts is drawn right (its faces counted behind the surface: z-fail).
-//   - the far plane cutting a primitive without depth clamping (frontFace), as in a browser
-//     without EXT_depth_clamp: the faces past it would be lost to the counts.
-//   - a near plane nearer than 2^-24 of the farthest the solid reaches along the view (refuseNear).
-void Csg::refuseCuts(const Frame& f, const CsgScene& scene, const SumOfProducts& sop) const {
-  refuseNear(f);
-  const glm::dmat4 viewProjection = glm::dmat4(f.projection) * glm::dmat4(view_);
-  std::vector<int> meets(scene.primitives.size(), -1);  // per primitive: not yet decided, 0 or 1
-  for (const CsgProduct& p : sop.products) {
-    bool all = !p.intersected.empty();
-    for (int a : p.intersected) {
-      const auto i = static_cast<std::size_t>(a);
-      if (meets[i] < 0) meets[i] = nearRectangleMeets(scene.primitives[i].mesh, glm::dmat4(models_[i]), viewProjection);
-      all = all && meets[i] == 1;
-      if (!all) break;
-    }
-    if (all)
-      throw UsageError("the near plane cuts '" + scene.primitives[static_cast<std::size_t>(p.intersected.front())].name +
-                       "', an intersected primitive: the result may begin at the near plane, and no method "
-                       "draws the cap the cut leaves there; move the eye back or make near smaller");
-  }
-  if (!hasFeature(f.features, Feature::DepthClamp))
-    for (std::size_t i = 0; i < scene.primitives.size(); ++i)
-      if (reachesPastFar(f, static_cast<int>(i)))
-        throw UsageError("the far plane may cut '" + scene.primitives[i].name +
-                         "', and without depth clamping (EXT_depth_clamp) its faces past it are lost to the "
-                         "counts; make far larger");
-}
-
-// A perspective frame's near plane n against the farthest point D of the primitives' bounding
-// spheres along the view. GL's depth mapping puts distance d at 1 - n/d (times f / (f - n) for a
-// far plane at f), held in steps of 2^-24 (a float just below 1, a 24-bit buffer): Frame::projection
-// is that mapping in float, so is the depth without clip control, and the oracle's depths are its
-// window depths. Past n 2^24 a distance is the far plane's depth, and -(f + n)/(f - n) rounds to
-// within a step of -1, which moves a far plane there (far 30 with near 1e-6 lay at 16.8). Refused
-// below D 2^-24: every point of the solid then lies a step or more in front of the far plane.
-void Csg::refuseNear(const Frame& f) const {
-  const glm::dmat4 p(f.projection);
-  if (p[2][3] != -1.0 || p[3][3] != 0.0) return;  // parallel: depth linear in the distance
-  const double near = p[3][2] / (p[2][2] - 1.0);
-  double farthest = 0.0;
-  for (std::size_t i = 0; i < models_.size(); ++i) {
-    const BoundingSphere s = worldSphereOf(static_cast<int>(i));
-    farthest = std::max(farthest, -(glm::dmat4(view_) * glm::dvec4(glm::dvec3(s.centre), 1.0)).z + s.radius);
-  }
-  const double bound = std::ldexp(farthest, -24);
-  if (near >= bound) return;
-  std::ostringstream out;
-  out.precision(3);
-  out << "the near plane (" << near << ") is nearer than 2^-24 times the distance of the solid's farthest point "
-      << "along the view (" << farthest << "): GL's depth mapping puts distance d at 1 - near/d, held in steps of "
-      << "2^-24 (a float just below 1, or 24 bits), so that point would lie at the far plane's depth; make near at "
-      << "least " << bound;
-  throw UsageError(out.str());
-}
-
 void Csg::startCounts(Frame& f, const SumOfProducts& sop, std::initializer_list<const char*> zeros,
                       bool beforePruning) {
   f.count("products", sop.products.size());
@@ -325,20 +199,24 @@ OrbitCamera insideB() {
 }  // namespace
 
 // SCS's intersection step takes the furthest front face for where a ray enters a primitive, and
-// its subtraction moves past one back face: both hold for convex primitives only.
+// its subtraction moves past one back face: both hold for convex primitives only. Only the
+// primitives the expression draws are judged: an object the csg line leaves out is never drawn.
 static std::string scsRefusal(const OptionsChosen& o) {
   if (o.value("method") != kScs) return {};
-  std::vector<std::pair<std::string, const Mesh*>> meshes;
+  std::vector<std::string> names;
+  std::vector<const Mesh*> meshes;
   CsgScene own;
   if (o.scene) {
-    for (const SceneObject& object : o.scene->objects) meshes.push_back({object.name, &object.mesh});
+    for (const SceneObject& object : o.scene->objects) names.push_back(object.name), meshes.push_back(&object.mesh);
   } else {
     own = goldfeatherScene(o.value("scene"), o.value("op"), o.value("grid"));
-    for (const Primitive& p : own.primitives) meshes.push_back({p.name, &p.mesh});
+    for (const Primitive& p : own.primitives) names.push_back(p.name), meshes.push_back(&p.mesh);
   }
-  for (const auto& [name, mesh] : meshes)
-    if (!convexMesh(*mesh))
-      return "method 3 (SCS) takes convex primitives only; '" + name + "' is concave: use method 1, 2 or 4";
+  const CsgTree tree = parseCsg(o.scene ? o.scene->csg : own.expression, names);
+  const std::vector<bool> used = primitivesUsed(normalize(tree), names.size());
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (used[i] && !convexMesh(*meshes[i]))
+      return "method 3 (SCS) takes convex primitives only; '" + names[i] + "' is concave: use method 1, 2 or 4";
   return {};
 }
 

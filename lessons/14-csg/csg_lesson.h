@@ -2,7 +2,8 @@
 // algorithms, in the papers' order (the demo's two solids, Goldfeather, layered Goldfeather, SCS);
 // drawing.cpp the work buffer, the frame's state and the draws they share; classroom.cpp what
 // surrounds them (the lesson's own scenes, cameras, options, variants and --stats counts);
-// oracle.cpp the check against the CSG ray cast. None of the last two changes what a pixel shows.
+// refusals.cpp what no method draws right, refused in one line; oracle.cpp the check against the
+// CSG ray cast. None of the last three changes what a pixel shows.
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -120,15 +121,19 @@ class Csg final : public Lesson {
   void beginFrame(const Frame& f, bool clearNow);
   void clearFrame();
   void endFrame(const Frame& f);
+  void abandonFrame(const Frame& f);  // endFrame from wherever a method stopped (a refusal)
   static std::uint64_t samplesPassed(Frame& f, const std::function<void()>& draw);
   static void bindSurface(GLuint depth, GLuint primitive);
   void fullScreen(const Program& program);
   // Back to the far plane, the background's colour where colour is written.
   void farQuad() { drawQuad(kBackground, static_cast<float>(depth_.farthest)); }
 
-  // ---- classroom.cpp: what no method draws, refused; the --stats counts a method starts from -----
+  // ---- refusals.cpp: what no method draws right, refused -----------------------------------------
   void refuseCuts(const Frame& f, const CsgScene& scene, const SumOfProducts& sop) const;
   void refuseNear(const Frame& f) const;
+  [[noreturn]] void refuseDeepCount(Frame& f, const CsgProduct& p, const std::vector<int>& targets);
+
+  // ---- classroom.cpp: the --stats counts a method starts from ------------------------------------
   static void startCounts(Frame& f, const SumOfProducts& sop, std::initializer_list<const char*> zeros,
                           bool beforePruning = false);
 
@@ -167,6 +172,8 @@ class Csg final : public Lesson {
   GLenum further() const { return depth_.less == GL_LESS ? GL_GREATER : GL_LESS; }
   GLenum furtherOrEqual() const { return depth_.lequal == GL_LEQUAL ? GL_GEQUAL : GL_LEQUAL; }
   double nearest() const { return 1.0 - depth_.farthest; }
+  // The queries option, where the frame can wait for a query's result (the browser's come after it).
+  static bool queriesWait(const Frame& f) { return f.on("queries") && f.features.samplesPassed; }
 };
 
 // ---- classroom.cpp ------------------------------------------------------------------------------
@@ -178,6 +185,14 @@ CsgScene sceneFor(const Frame&, const Scene* fromFile);
 // Whether a closed mesh bounds a convex solid (geometry/shadow_volume.h's isConvex on the mesh
 // welded by position): SCS takes only these, and Goldfeather tries one layer of them.
 bool convexMesh(const Mesh& mesh);
+
+// ---- refusals.cpp ------------------------------------------------------------------------------
+
+// Per primitive, whether a product of the sum names it: the primitives the expression draws.
+std::vector<bool> primitivesUsed(const SumOfProducts& sop, std::size_t count);
+
+// A product as the csg line writes it ("a * b - c"), its first few primitives where it has many.
+std::string productText(const CsgProduct& p, const CsgScene& scene);
 
 // The lesson's name, options, variants (with their cameras) and passes.
 LessonInfo lessonInfo();

@@ -286,6 +286,22 @@ void Csg::endFrame(const Frame& f) {
   if (f.reversedDepth) glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);  // GL's default mapping
 }
 
+// endFrame from wherever a method stopped: a refusal mid-frame (refuseDeepCount) leaves no state
+// behind for the next frame (the window's, drawn with the settings before). The automatic method's
+// scissor and draw buffers too.
+void Csg::abandonFrame(const Frame& f) {
+  glDisable(GL_SCISSOR_TEST);
+  const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  for (GLuint buffer : {nearest_, work_}) {
+    glBindFramebuffer(GL_FRAMEBUFFER, buffer);
+    glDrawBuffers(2, both);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer());
+  glStencilMask(0xFF);
+  bindSurface(0, 0);
+  endFrame(f);
+}
+
 // The bound frame cleared (the background, the far plane, stencil 0), once a frame. Left until the
 // first merge, the clear begins the merge's own batch of draws: llvmpipe then sets each tile to the
 // clear values as it starts it, where a clear before the work buffer's passes is a batch of its own,

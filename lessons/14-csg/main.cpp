@@ -33,7 +33,7 @@
 // a convexity bound c tries c layers of each target: O(n^2 c) passes for a product of n. Layered
 // Goldfeather selects the k-th fragment of all the product's target faces at once, k up to the
 // largest depth complexity of those faces (lesson 13's count): k(1 + n) passes. An occlusion
-// query that finds a layer empty stops either early.
+// query that finds a layer empty stops either early. INCR stops at 255, which may mean more: refused.
 //
 // SCS (Stewart, Leach and John), for convex primitives only: the intersection is entered at the
 // furthest of the intersected front faces (if every intersected back face lies behind it), and a
@@ -48,9 +48,8 @@
 // buffer's colour, depth and stencil at each step. Depth is reversed and floating-point where the
 // driver has clip control (lesson 15), every comparison flipped with it.
 // Reading order: render, the two solids, Goldfeather, layered Goldfeather (its depth complexity), SCS;
-// the automatic method (per product SCS or layered Goldfeather, OpenCSG's economies) is in
-// automatic.cpp, the work buffer, the frame's state and the draws in drawing.cpp, the scenes, cameras,
-// options, variants and --stats counts in classroom.cpp, the oracle's hook in oracle.cpp.
+// beside it automatic.cpp (per product SCS or layered Goldfeather), drawing.cpp (the work buffer and
+// draws), classroom.cpp (scenes, options, variants), refusals.cpp (what no method draws), oracle.cpp.
 
 #include <algorithm>
 #include <string>
@@ -179,7 +178,7 @@ void Csg::goldfeather(Frame& f, const SumOfProducts& sop, bool layered) {
     std::vector<int> targets = product.intersected;
     targets.insert(targets.end(), product.subtracted.begin(), product.subtracted.end());
     if (layered) {
-      const int k = f.on("queries") ? 255 : targetDepthComplexity(f, product, targets);
+      const int k = queriesWait(f) ? 255 : targetDepthComplexity(f, product, targets);
       for (int layer = 0; layer < k; ++layer)
         if (!trimLayer(f, product, targets, targets, layer)) break;
     } else {
@@ -212,25 +211,25 @@ bool Csg::trimLayer(Frame& f, const CsgProduct& p, const std::vector<int>& targe
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glStencilMask(0xFF);
   clearWork();
-  // 1. Select: the layer-th fragment drawn at each pixel. Every fragment INCRs the stencil, and
-  // only the one that finds it EQUAL to layer writes its depth and its primitive (and its
-  // colour: the work buffer's colour is no part of the method, it shows the surface to the pass
-  // stepper).
+  // 1. Select: the layer-th fragment drawn at each pixel. Every fragment INCRs the stencil, and only
+  // the one that finds it EQUAL to layer writes its depth and its primitive (and its colour: no part
+  // of the method, it shows the surface to the pass stepper).
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_ALWAYS);  // in draw order, not depth order: every fragment is some layer
   glDepthMask(GL_TRUE);
   glEnable(GL_STENCIL_TEST);
-  glStencilFunc(GL_EQUAL, std::min(layer, 255), 0xFF);
+  glStencilFunc(GL_EQUAL, layer, 0xFF);
   glStencilOp(GL_INCR, GL_INCR, GL_INCR);  // each fragment counts, passing or not
   const auto select = [&] { drawTargets(p, targets, automatic ? Paint::Primitive : Paint::Selected); };
   std::uint64_t selected = 1;
-  if (f.on("queries") && f.features.samplesPassed)  // (the browser's come after the frame)
+  if (queriesWait(f))
     selected = samplesPassed(f, select);
   else
     select();
   f.count("select_passes");
   f.pass("select");
   if (selected == 0) return false;
+  if (layer == 254) refuseDeepCount(f, p, targets);  // a 255th fragment (queries): 255 or more layers
   f.count("layers");  // a layer with fragments, trimmed and merged
 
   // 2. Parity: one stencil bit per trimming primitive, INVERT where its faces lie behind the
@@ -332,9 +331,9 @@ void Csg::mergeIntoFrame(Frame& f, const CsgProduct& p, const std::vector<int>& 
   f.pass("merge");
 }
 
-// Lesson 13's count on the targets' faces (all the product's, layered; one concave target's, method 1): INCR on every fragment, the depth test
-// off; the largest count, found by bisection with stencil LESS and occlusion queries, is the
-// number of layers the layered method needs.
+// Lesson 13's count on the targets' faces (all the product's, layered; one concave target's, method
+// 1): INCR on every fragment, the depth test off; the largest count, found by bisection with stencil
+// LESS and occlusion queries, is the number of layers the layered method needs.
 int Csg::targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<int>& targets,
                                LayerCounts* counts) {
   glBindFramebuffer(GL_FRAMEBUFFER, work_);
@@ -363,6 +362,7 @@ int Csg::targetDepthComplexity(Frame& f, const CsgProduct& p, const std::vector<
     else
       high = middle;
   }
+  if (low == 255) refuseDeepCount(f, p, targets);  // INCR stops at 255: 255 or more, and layers lost
   glEnable(GL_DEPTH_TEST);
   f.count("layers_counted", static_cast<std::uint64_t>(low));
   f.pass("layers");
@@ -468,24 +468,27 @@ void Csg::scsSubtract(Frame& f, const std::vector<int>& batch, bool automatic, G
 // Counts the intersected primitives whose back face lies behind the surface (or on it) and sends
 // every pixel where that is not all of them to the far plane: the surface lies outside one, or a
 // primitive does not cover the pixel at all (no back face to count; checking for a back face in
-// front would miss that one). `cleared`: the stencil is 0 already.
+// front would miss that one). 255 at a time (INCR stops there). `cleared`: the stencil is 0 already.
 void Csg::clipByIntersection(Frame& f, const CsgProduct& p, bool cleared) {
-  glStencilMask(0xFF);
-  if (!cleared) glClear(GL_STENCIL_BUFFER_BIT);
-  glDepthFunc(furtherOrEqual());  // the back face behind the surface: the surface is before it leaves
-  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  glDepthMask(GL_FALSE);
-  glStencilFunc(GL_ALWAYS, 0, 0);
-  glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
-  glCullFace(GL_FRONT);
-  for (int a : p.intersected) drawDepth(a);
-  glDepthFunc(GL_ALWAYS);
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glDepthMask(GL_TRUE);
-  glStencilMask(0);
-  glStencilFunc(GL_NOTEQUAL, static_cast<GLint>(std::min<std::size_t>(p.intersected.size(), 255)), 0xFF);
-  farQuad();
-  glStencilMask(0xFF);
+  for (std::size_t first = 0; first < p.intersected.size(); first += 255) {
+    const std::size_t n = std::min<std::size_t>(p.intersected.size() - first, 255);
+    glStencilMask(0xFF);
+    if (!cleared || first > 0) glClear(GL_STENCIL_BUFFER_BIT);
+    glDepthFunc(furtherOrEqual());  // the back face behind the surface: the surface is before it leaves
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDepthMask(GL_FALSE);
+    glStencilFunc(GL_ALWAYS, 0, 0);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+    glCullFace(GL_FRONT);
+    for (std::size_t i = first; i < first + n; ++i) drawDepth(p.intersected[i]);
+    glDepthFunc(GL_ALWAYS);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+    glStencilMask(0);
+    glStencilFunc(GL_NOTEQUAL, static_cast<GLint>(n), 0xFF);
+    farQuad();
+    glStencilMask(0xFF);
+  }
   f.count("clip_passes");
 }
 
