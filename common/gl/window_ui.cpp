@@ -1076,11 +1076,15 @@ int runWindow(Session& s) {
                               s.camera.projection(1.0f) == drawnCamera.projection(1.0f);
         if (s.variant == drawnVariant && s.options == drawnOptions && sameView) throw;  // nothing to undo
         const std::string refused = s.info.id + ": " + inWindowWords(e.what());
+        const Option* stepped = st.stepped ? &drawnOptions[st.stepped->first] : nullptr;
+        const std::string tried = stepped ? s.options[st.stepped->first].name + " " +
+                                                std::to_string(s.options[st.stepped->first].value) : std::string();
         if (stepPastRefusals(st, drawnOptions, request)) {
-          tell(st, refused + " (stepped on)");
+          tell(st, refused + " (" + tried + " skipped)");
           optionChanged(st, s.options[st.stepped->first]);
         } else {
-          tell(st, refused + " (kept variant " + drawnVariant + ", its settings and the view)");
+          tell(st, refused + (stepped ? " (" + stepped->name + " kept at " + std::to_string(stepped->value) + ")"
+                                      : " (kept variant " + drawnVariant + ", its settings and the view)"));
           if (s.variant != drawnVariant) s.setVariant(drawnVariant);
           s.options = drawnOptions;
           s.camera = drawnCamera;

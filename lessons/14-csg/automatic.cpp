@@ -55,13 +55,7 @@ void Csg::automatic(Frame& f, const SumOfProducts& sop) {
       layeredByLayerRects(f, p, within);
     }
   }
-  glDisable(GL_SCISSOR_TEST);
-  const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  for (GLuint buffer : {nearest_, work_}) {
-    glBindFramebuffer(GL_FRAMEBUFFER, buffer);
-    glDrawBuffers(2, both);
-  }
-  glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer());
+  unscissorAndDrawToBoth(f);
 }
 
 // SCS on one product of convex primitives (main.cpp's steps), the subtractions in cycles until

@@ -122,6 +122,7 @@ class Csg final : public Lesson {
   void clearFrame();
   void endFrame(const Frame& f);
   void abandonFrame(const Frame& f);  // endFrame from wherever a method stopped (a refusal)
+  void unscissorAndDrawToBoth(const Frame& f);  // the automatic method's scissor and draw buffers undone
   static std::uint64_t samplesPassed(Frame& f, const std::function<void()>& draw);
   static void bindSurface(GLuint depth, GLuint primitive);
   void fullScreen(const Program& program);

@@ -286,10 +286,9 @@ void Csg::endFrame(const Frame& f) {
   if (f.reversedDepth) glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);  // GL's default mapping
 }
 
-// endFrame from wherever a method stopped: a refusal mid-frame (refuseDeepCount) leaves no state
-// behind for the next frame (the window's, drawn with the settings before). The automatic method's
-// scissor and draw buffers too.
-void Csg::abandonFrame(const Frame& f) {
+// No scissor, both colour attachments drawn to in the nearest-layers and work buffers, the frame's
+// framebuffer bound: as a frame starts.
+void Csg::unscissorAndDrawToBoth(const Frame& f) {
   glDisable(GL_SCISSOR_TEST);
   const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
   for (GLuint buffer : {nearest_, work_}) {
@@ -297,6 +296,13 @@ void Csg::abandonFrame(const Frame& f) {
     glDrawBuffers(2, both);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, f.framebuffer());
+}
+
+// endFrame from wherever a method stopped: a refusal mid-frame (refuseDeepCount) leaves no state
+// behind for the next frame (the window's, drawn with the settings before). The automatic method's
+// scissor and draw buffers too.
+void Csg::abandonFrame(const Frame& f) {
+  unscissorAndDrawToBoth(f);
   glStencilMask(0xFF);
   bindSurface(0, 0);
   endFrame(f);
