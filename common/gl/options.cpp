@@ -53,6 +53,15 @@ const Variant& findVariant(const LessonInfo& info, const std::string& name) {
   throw UsageError("unknown variant '" + name + "'; --list-variants shows them");
 }
 
+std::vector<std::pair<std::string, int>> settingsAwayFromVariant(const LessonInfo& info, const std::string& variant,
+                                                                 const std::vector<Option>& options) {
+  const std::vector<Option> variantValues = optionsFor(info, variant, {});
+  std::vector<std::pair<std::string, int>> settings;
+  for (std::size_t i = 0; i < options.size() && i < variantValues.size(); ++i)
+    if (options[i].value != variantValues[i].value) settings.emplace_back(options[i].name, options[i].value);
+  return settings;
+}
+
 std::vector<Option> optionsFor(const LessonInfo& info, const std::string& variant,
                                const std::vector<std::pair<std::string, int>>& settings) {
   std::vector<Option> options = info.options;

@@ -68,5 +68,9 @@ std::string variantList(const LessonInfo&);
 std::vector<Option> optionsFor(const LessonInfo&, const std::string& variant,
                                const std::vector<std::pair<std::string, int>>& settings);
 const Variant& findVariant(const LessonInfo&, const std::string& name);
+// The --set settings that give `options` from the variant's values: those away from them (NAME,
+// VALUE, in the lesson's order).
+std::vector<std::pair<std::string, int>> settingsAwayFromVariant(const LessonInfo&, const std::string& variant,
+                                                                 const std::vector<Option>& options);
 
 }  // namespace stencil

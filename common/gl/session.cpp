@@ -81,10 +81,7 @@ void Session::resize(int width, int height) {
 // line would refuse (lesson 14's own scenes picked while a scene file is drawn) is refused too.
 void Session::refuseChosenOptions() {
   if (!info.refuseOptions || (accepted_ && accepted_->first == variant && accepted_->second == options)) return;
-  const std::vector<Option> variantValues = optionsFor(info, variant, {});
-  std::vector<std::pair<std::string, int>> settings;
-  for (std::size_t i = 0; i < options.size() && i < variantValues.size(); ++i)
-    if (options[i].value != variantValues[i].value) settings.emplace_back(options[i].name, options[i].value);
+  const auto settings = settingsAwayFromVariant(info, variant, options);
   if (const std::string why = info.refuseOptions({options, settings, scene}); !why.empty()) throw UsageError(why);
   accepted_.emplace(variant, options);
 }

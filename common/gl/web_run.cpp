@@ -244,11 +244,7 @@ void startSession(const std::optional<std::filesystem::path>& path) {
   cl.scene = path;
   if (r.session) {  // the variant, and the options the page set away from its values
     cl.variant = r.session->variant;
-    cl.settings.clear();
-    const std::vector<Option> variantValues = optionsFor(r.declared, cl.variant, {});
-    for (std::size_t i = 0; i < r.session->options.size(); ++i)
-      if (r.session->options[i].value != variantValues[i].value)
-        cl.settings.emplace_back(r.session->options[i].name, r.session->options[i].value);
+    cl.settings = settingsAwayFromVariant(r.declared, cl.variant, r.session->options);
   }
   addSceneSettings(r.declared, cl);
   auto info = std::make_unique<LessonInfo>(r.declared);

@@ -224,15 +224,12 @@ void optionChanged(WindowState& st, const Option& o) {
   st.sayCountsAfter = 1;
 }
 
-// After a refusal of the value a key stepped an option to (lesson 14's method 0 with a scene file),
-// the values beyond it the same way round, each drawn until one is taken: true then, that frame
-// drawn; false where only the options drawn before are taken (the caller puts them back).
+// After a refusal of the value a key stepped an option to, that option alone changed (lesson 14's
+// method 0 with a scene file): the values beyond it the same way round, each drawn until one is
+// taken: true then, that frame drawn; false where only the value drawn before is taken (the caller
+// puts it back).
 bool stepPastRefusals(WindowState& st, const std::vector<Option>& drawnOptions, const FrameRequest& request) {
   Session& s = st.session;
-  if (!st.stepped || st.stepped->first >= s.options.size()) return false;
-  std::vector<Option> others = s.options;
-  others[st.stepped->first] = drawnOptions[st.stepped->first];
-  if (others != drawnOptions) return false;  // more than the stepped option changed
   Option& o = s.options[st.stepped->first];
   for (o.value = steppedValue(o, st.stepped->second); o.value != drawnOptions[st.stepped->first].value;
        o.value = steppedValue(o, st.stepped->second))
@@ -1076,10 +1073,16 @@ int runWindow(Session& s) {
                               s.camera.projection(1.0f) == drawnCamera.projection(1.0f);
         if (s.variant == drawnVariant && s.options == drawnOptions && sameView) throw;  // nothing to undo
         const std::string refused = s.info.id + ": " + inWindowWords(e.what());
+        // The change was a key's step of one option alone: its values beyond are tried.
+        if (st.stepped) {
+          std::vector<Option> others = s.options;
+          others[st.stepped->first] = drawnOptions[st.stepped->first];
+          if (others != drawnOptions || s.variant != drawnVariant || !sameView) st.stepped.reset();
+        }
         const Option* stepped = st.stepped ? &drawnOptions[st.stepped->first] : nullptr;
         const std::string tried = stepped ? s.options[st.stepped->first].name + " " +
                                                 std::to_string(s.options[st.stepped->first].value) : std::string();
-        if (stepPastRefusals(st, drawnOptions, request)) {
+        if (stepped && stepPastRefusals(st, drawnOptions, request)) {
           tell(st, refused + " (" + tried + " skipped)");
           optionChanged(st, s.options[st.stepped->first]);
         } else {
